@@ -1,0 +1,74 @@
+#include "h5/AtomicFile.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "h5/H5Error.hpp"
+
+namespace granwave::h5 {
+namespace {
+
+std::string temporaryFor(const std::string& target) {
+  return target + ".tmp-" + std::to_string(::getpid());
+}
+
+// Forces the bytes to disk before the rename publishes them; otherwise a power loss right
+// after the rename could leave a complete-looking name over incomplete contents.
+void syncPath(const std::string& path, int flags) {
+  const int fd = ::open(path.c_str(), flags);
+  if (fd < 0) return;
+  (void)::fsync(fd);
+  ::close(fd);
+}
+
+// HDF5 may leave a partial file behind when creation fails half-way.
+File createOrRemove(const std::string& temporary, const std::string& target) {
+  try {
+    return File::create(temporary, target);
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+}
+
+std::string directoryOf(const std::string& path) {
+  const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  return parent.empty() ? std::string(".") : parent.string();
+}
+
+}  // namespace
+
+AtomicFile::AtomicFile(std::string target)
+    : target_(std::move(target)),
+      temporary_(temporaryFor(target_)),
+      file_(createOrRemove(temporary_, target_)) {}
+
+AtomicFile::~AtomicFile() {
+  if (committed_) return;
+  try {
+    file_.close();
+  } catch (const H5Error&) {
+    // The contents are being discarded; a failure to write them back is moot.
+  }
+  std::remove(temporary_.c_str());
+}
+
+void AtomicFile::commitTo(const std::string& path) {
+  if (committed_) throw H5Error(target_ + ": already committed");
+  file_.flush();
+  file_.close();
+  syncPath(temporary_, O_RDONLY);
+  if (std::rename(temporary_.c_str(), path.c_str()) != 0) {
+    throw H5Error(target_ + ": cannot rename " + temporary_ + " to " + path + " (" +
+                  std::strerror(errno) + ")");
+  }
+  committed_ = true;
+  syncPath(directoryOf(path), O_RDONLY | O_DIRECTORY);
+}
+
+}  // namespace granwave::h5

@@ -1,0 +1,69 @@
+#include "particles/CellGrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granwave {
+
+int cellsAlong(double length, double min_side) {
+  return std::max(1, static_cast<int>(std::floor(length / min_side)));
+}
+
+CellGrid::CellGrid(const CellGeometry& g, int particles)
+    : g_(g),
+      head_(g.nx * g.nz, -1),
+      next_(particles, -1),
+      prev_(particles, -1),
+      cell_(particles, -1) {}
+
+int CellGrid::locate(double x, double z) const {
+  const int cx = std::clamp(static_cast<int>(std::floor((x - g_.x0) / g_.wx)), 0, g_.nx - 1);
+  const int cz = std::clamp(static_cast<int>(std::floor((z - g_.z0) / g_.wz)), 0, g_.nz - 1);
+  return index(cx, cz);
+}
+
+void CellGrid::insert(int p, int cell) {
+  cell_[p] = cell;
+  prev_[p] = -1;
+  next_[p] = head_[cell];
+  if (head_[cell] >= 0) prev_[head_[cell]] = p;
+  head_[cell] = p;
+}
+
+void CellGrid::remove(int p) {
+  const int c = cell_[p];
+  if (prev_[p] >= 0) {
+    next_[prev_[p]] = next_[p];
+  } else {
+    head_[c] = next_[p];
+  }
+  if (next_[p] >= 0) prev_[next_[p]] = prev_[p];
+  cell_[p] = -1;
+}
+
+int CellGrid::neighbours(int cell, Neighbour out[9]) const {
+  const int cx0 = cx(cell), cz0 = cz(cell);
+  int n = 0;
+  for (int dz = -1; dz <= 1; ++dz) {
+    int cz1 = cz0 + dz;
+    double sz = 0;
+    if (cz1 < 0 || cz1 >= g_.nz) {
+      if (!g_.periodic_z) continue;
+      sz = cz1 < 0 ? -g_.lz() : g_.lz();
+      cz1 = (cz1 + g_.nz) % g_.nz;
+    }
+    for (int dx = -1; dx <= 1; ++dx) {
+      int cx1 = cx0 + dx;
+      double sx = 0;
+      if (cx1 < 0 || cx1 >= g_.nx) {
+        if (!g_.periodic_x) continue;
+        sx = cx1 < 0 ? -g_.lx() : g_.lx();
+        cx1 = (cx1 + g_.nx) % g_.nx;
+      }
+      out[n++] = {index(cx1, cz1), sx, sz};
+    }
+  }
+  return n;
+}
+
+}  // namespace granwave

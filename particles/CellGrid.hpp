@@ -1,0 +1,56 @@
+#pragma once
+// Lab-frame cells of side >= d (so any touching pair sits in adjacent cells) holding
+// particles in intrusive doubly linked lists, O(1) insert and remove. Periodic directions
+// wrap; the neighbour stencil then carries the image shift to apply to the partner.
+#include <vector>
+
+namespace granwave {
+
+struct CellGeometry {
+  int nx = 1, nz = 1;
+  double x0 = 0, z0 = 0;  // lower-left corner of the grid
+  double wx = 1, wz = 1;  // cell sizes
+  bool periodic_x = false, periodic_z = false;
+  double lx() const { return nx * wx; }
+  double lz() const { return nz * wz; }
+};
+
+// Side length of at least `min_side`, dividing `length` into a whole number of cells.
+int cellsAlong(double length, double min_side);
+
+class CellGrid {
+ public:
+  CellGrid() = default;
+  explicit CellGrid(const CellGeometry& g, int particles);
+
+  const CellGeometry& geometry() const { return g_; }
+  int index(int cx, int cz) const { return cz * g_.nx + cx; }
+  int cx(int cell) const { return cell % g_.nx; }
+  int cz(int cell) const { return cell / g_.nx; }
+  // Cell containing point (x, z), clamped into the grid.
+  int locate(double x, double z) const;
+
+  void insert(int particle, int cell);
+  void remove(int particle);
+  int cellOf(int particle) const { return cell_[particle]; }
+  int head(int cell) const { return head_[cell]; }
+  int next(int particle) const { return next_[particle]; }
+
+  double xLow(int cell) const { return g_.x0 + cx(cell) * g_.wx; }
+  double zLow(int cell) const { return g_.z0 + cz(cell) * g_.wz; }
+
+  // Neighbour stencil (3 x 3, self included): cell index and the shift to add to a partner's
+  // position so that it is the image nearest to the centre cell. Cells outside a
+  // non-periodic grid are left out.
+  struct Neighbour {
+    int cell;
+    double shift_x, shift_z;
+  };
+  int neighbours(int cell, Neighbour out[9]) const;
+
+ private:
+  CellGeometry g_;
+  std::vector<int> head_, next_, prev_, cell_;
+};
+
+}  // namespace granwave

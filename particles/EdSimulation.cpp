@@ -1,0 +1,245 @@
+#include "particles/EdSimulation.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace granwave {
+
+EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& init)
+    : cfg_(config), rotation_(config.tangential.friction > 0.0) {
+  const int n = init.size();
+  const double d = cfg_.diameter;
+  if (n < 1) throw std::invalid_argument("a simulation needs at least one particle");
+  if (cfg_.periodic_z && cfg_.plate.amplitude > 0)
+    throw std::invalid_argument("container.periodic_z needs an undriven scene (drive.frequency = 0)");
+
+  // Lab-frame grid covering every height a centre can reach: [-A, L_z + A] with walls,
+  // [0, L_z) periodic (coarse-graining.md uses the same extent).
+  CellGeometry g;
+  g.periodic_x = cfg_.periodic_x;
+  g.periodic_z = cfg_.periodic_z;
+  g.nx = cellsAlong(cfg_.width, d);
+  g.wx = cfg_.width / g.nx;
+  const double A = cfg_.plate.amplitude;
+  const double span = cfg_.periodic_z ? cfg_.height : cfg_.height + 2 * A;
+  g.nz = cellsAlong(span, d);
+  g.wz = span / g.nz;
+  g.z0 = cfg_.periodic_z ? 0.0 : -A;
+  if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
+    throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
+  cells_ = CellGrid(g, n);
+  z_floor_ = g.z0;
+
+  const double aw2 = cfg_.plate.maxAcceleration();
+  bottom_curvature_ = cfg_.gravity + aw2;
+  lid_curvature_ = std::max(0.0, aw2 - cfg_.gravity);
+  pair_curvature_ = cfg_.gravity + aw2;
+  ride_curvature_ = aw2;
+
+  p_.resize(n);
+  ev_.resize(n);
+  queue_.reset(n);
+  const double tol = 1e-9 * d;
+  for (int i = 0; i < n; ++i) {
+    ParticleState& s = p_[i];
+    s.x = init.x[i];
+    s.z = init.z[i];
+    s.vx = init.vx[i];
+    s.vz = init.vz[i];
+    s.omega = rotation_ && !init.omega.empty() ? init.omega[i] : 0.0;
+    if (!std::isfinite(s.x) || !std::isfinite(s.z) || !std::isfinite(s.vx) || !std::isfinite(s.vz))
+      throw std::invalid_argument(fmt::format("particle {} has a non-finite initial state", i));
+    if (cfg_.periodic_x) {
+      s.x -= cfg_.width * std::floor(s.x / cfg_.width);
+    } else if (s.x < 0.5 * d - tol || s.x > cfg_.width - 0.5 * d + tol) {
+      throw std::invalid_argument(
+          fmt::format("particle {} at x = {:.6g} m lies outside the side walls", i, s.x));
+    }
+    if (cfg_.periodic_z) {
+      s.z -= cfg_.height * std::floor(s.z / cfg_.height);
+    } else {
+      const double zb = cfg_.plate.height(0.0);
+      if (s.z < zb + 0.5 * d - tol || s.z > zb + cfg_.height - 0.5 * d + tol)
+        throw std::invalid_argument(
+            fmt::format("particle {} at z = {:.6g} m lies outside bottom and lid", i, s.z));
+    }
+    cells_.insert(i, cells_.locate(s.x, s.z));
+  }
+  for (int i = 0; i < n; ++i) {
+    const int c = cells_.cellOf(i);
+    CellGrid::Neighbour nb[9];
+    const int m = cells_.neighbours(c, nb);
+    for (int k = 0; k < m; ++k) {
+      for (int j = cells_.head(nb[k].cell); j >= 0; j = cells_.next(j)) {
+        if (j <= i) continue;
+        const double dx = p_[i].x - p_[j].x - nb[k].shift_x;
+        const double dz = p_[i].z - p_[j].z - nb[k].shift_z;
+        if (dx * dx + dz * dz < d * d * (1 - 1e-9))
+          throw std::invalid_argument(fmt::format(
+              "particles {} and {} overlap in the initial state (distance {:.6g} m < d = {:.6g} m)",
+              i, j, std::sqrt(dx * dx + dz * dz), d));
+      }
+    }
+  }
+  for (int i = 0; i < n; ++i) predict(i);
+}
+
+void EdSimulation::advance(int i, double t) {
+  ParticleState& s = p_[i];
+  const double dt = t - s.t;
+  if (s.motion == Motion::Ballistic) {
+    s.x += s.vx * dt;
+    s.z += (s.vz - 0.5 * cfg_.gravity * dt) * dt;
+    s.vz -= cfg_.gravity * dt;
+  } else {
+    // The wall carries the particle: its energy changes by the wall's work.
+    const double before = particleEnergy(s);
+    s.x += s.vx * dt;
+    s.z = cfg_.plate.height(t) + s.ride_offset;
+    s.vz = cfg_.plate.velocity(t);
+    obs_.wall_work += particleEnergy(s) - before;
+  }
+  s.t = t;
+}
+
+ParticleState EdSimulation::extrapolated(int i, double t) const {
+  ParticleState s = p_[i];
+  const double dt = t - s.t;
+  s.x += s.vx * dt;
+  if (s.motion == Motion::Ballistic) {
+    s.z += (s.vz - 0.5 * cfg_.gravity * dt) * dt;
+    s.vz -= cfg_.gravity * dt;
+  } else {
+    s.z = cfg_.plate.height(t) + s.ride_offset;
+    s.vz = cfg_.plate.velocity(t);
+  }
+  s.t = t;
+  return s;
+}
+
+double EdSimulation::particleEnergy(const ParticleState& s) const {
+  const double m = cfg_.mass;
+  const double inertia = m * cfg_.diameter * cfg_.diameter / 10.0;
+  return 0.5 * m * (s.vx * s.vx + s.vz * s.vz) + 0.5 * inertia * s.omega * s.omega +
+         m * cfg_.gravity * s.z;
+}
+
+bool EdSimulation::wallPushes(WallId wall, double t) const {
+  // A wall holds a resting particle while its acceleration, relative to free fall, points
+  // into the container: bottom while z_b'' > -g, lid while z_b'' < -g.
+  const double a = cfg_.plate.acceleration(t);
+  if (wall == kBottom) return a > -cfg_.gravity;
+  if (wall == kLid) return a < -cfg_.gravity;
+  return false;
+}
+
+Vec2 EdSimulation::position(int i) const {
+  const ParticleState s = extrapolated(i, now_);
+  return {s.x, s.z};
+}
+
+Vec2 EdSimulation::velocity(int i) const {
+  const ParticleState s = extrapolated(i, now_);
+  return {s.vx, s.vz};
+}
+
+Snapshot EdSimulation::snapshot() const {
+  Snapshot snap;
+  const int n = size();
+  snap.time = now_;
+  snap.step = records_;
+  snap.plate_height = cfg_.plate.height(now_);
+  snap.x.resize(n);
+  snap.z.resize(n);
+  snap.vx.resize(n);
+  snap.vz.resize(n);
+  snap.omega.resize(n);
+  Observables o = obs_;
+  const double m = cfg_.mass;
+  const double inertia = m * cfg_.diameter * cfg_.diameter / 10.0;
+  double zsum = 0, ke = 0, rot = 0;
+  for (int i = 0; i < n; ++i) {
+    const ParticleState s = extrapolated(i, now_);
+    snap.x[i] = s.x;
+    snap.z[i] = s.z;
+    snap.vx[i] = s.vx;
+    snap.vz[i] = s.vz;
+    snap.omega[i] = s.omega;
+    zsum += s.z;
+    ke += 0.5 * m * (s.vx * s.vx + s.vz * s.vz);
+    rot += 0.5 * inertia * s.omega * s.omega;
+    if (p_[i].motion != Motion::Ballistic) o.wall_work += particleEnergy(s) - particleEnergy(p_[i]);
+  }
+  o.center_of_mass_height = zsum / n;
+  o.kinetic_energy = ke;
+  o.rotational_energy = rot;
+  o.potential_energy = m * cfg_.gravity * zsum;
+  o.pressure = 0;
+  if (cfg_.periodic_x && cfg_.periodic_z) {
+    // 2D virial theorem for hard disks: P A = E_kin + (1/(2 dt)) sum_coll r_ij . dp_i
+    const double dt = now_ - virial_since_;
+    o.pressure = (ke + (dt > 0 ? virial_ / (2.0 * dt) : 0.0)) / (cfg_.width * cfg_.height);
+  }
+  snap.obs = o;
+  return snap;
+}
+
+void EdSimulation::record() {
+  const Snapshot snap = snapshot();
+  for (SnapshotObserver* o : observers_) o->observe(snap);
+  virial_ = 0;
+  virial_since_ = now_;
+  ++records_;
+  next_record_ = static_cast<double>(records_) * cfg_.record_interval;
+}
+
+void EdSimulation::advanceTo(double t) {
+  std::uint64_t stalled = 0;
+  double last = now_;
+  while (queue_.topTime() <= t) {
+    now_ = queue_.topTime();
+    process(queue_.top());
+    ++obs_.events;
+    if (now_ == last) {
+      if (++stalled > 50'000'000)
+        throw std::runtime_error(fmt::format(
+            "event loop stalled: 5e7 events without time advancing at t = {:.12g} s", now_));
+    } else {
+      stalled = 0;
+      last = now_;
+    }
+  }
+  now_ = t;
+}
+
+RunStatus EdSimulation::run(const std::atomic<bool>* interrupt) {
+  RunStatus st;
+  const double end = cfg_.duration;
+  const double eps = 1e-12 * std::max(end, cfg_.record_interval);
+  next_record_ = static_cast<double>(records_) * cfg_.record_interval;
+  while (true) {
+    const double t_stop = std::min(next_record_, end);
+    // The interrupt flag is polled once per record, not per event.
+    advanceTo(t_stop);
+    if (now_ >= next_record_ - eps && next_record_ <= end + eps) {
+      now_ = next_record_;
+      record();
+    }
+    if (now_ >= end - eps && next_record_ > end + eps) {
+      st.completed = true;
+      break;
+    }
+    if (interrupt && interrupt->load(std::memory_order_relaxed)) {
+      st.interrupted = true;
+      break;
+    }
+  }
+  st.time = now_;
+  st.events = obs_.events;
+  return st;
+}
+
+}  // namespace granwave

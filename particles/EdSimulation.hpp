@@ -1,0 +1,120 @@
+#pragma once
+// Event-driven (ED) hard-sphere simulation of a quasi-2D vibrated granular layer
+// (paper, Methods; model fixed in shared/design/physics-particles.md).
+//
+// Particles fly ballistically under gravity between instantaneous events: pair collisions
+// (exact quadratic), collisions with the sinusoidally moving bottom and lid (exact first
+// root via GapRootFinder), side walls, cell crossings, and take-off of particles riding a
+// wall. Each particle keeps one scheduled event in an indexed heap; events made stale by a
+// partner's collision are dropped lazily by collision counters; particles are advanced
+// lazily. Recording extrapolates all particles to the recording time without changing
+// the state. Cost per event O(log N), memory O(N).
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "particles/CellGrid.hpp"
+#include "particles/CollisionRule.hpp"
+#include "particles/Event.hpp"
+#include "particles/EventQueue.hpp"
+#include "particles/ParticleState.hpp"
+#include "particles/PlateMotion.hpp"
+#include "particles/Restitution.hpp"
+#include "particles/Snapshot.hpp"
+
+namespace granwave {
+
+struct Scene;
+
+// Everything the engine needs, resolved from a Scene (engineConfig) or set by tests.
+struct EngineConfig {
+  double diameter = 0.002, mass = 1, gravity = 9.81;
+  double width = 0.06, height = 0.06;  // container L_x, L_z
+  bool periodic_x = false, periodic_z = false;
+  PlateMotion plate;
+  Restitution restitution = Restitution::constant(1.0);
+  TangentialLaw tangential;
+  bool rough_walls = false;
+  double tc = 0;              // s; 0 = TC model off
+  double rest_velocity = 1e-6;
+  double duration = 1;        // s
+  double record_interval = 0.01;
+  // Collapse detection: more than `collapse_collisions` collisions of one particle within
+  // `collapse_window` seconds.
+  std::uint32_t collapse_collisions = 2000;
+  double collapse_window = 1e-6;
+};
+
+EngineConfig engineConfig(const Scene& scene);
+
+struct RunStatus {
+  bool completed = false;    // reached the duration
+  bool interrupted = false;  // stopped by the interrupt flag
+  double time = 0;
+  std::uint64_t events = 0;
+};
+
+class EdSimulation {
+ public:
+  EdSimulation(const EngineConfig& config, const InitialCondition& initial);
+
+  void addObserver(SnapshotObserver* observer) { observers_.push_back(observer); }
+  // Runs to config.duration, recording every record_interval (t = 0 included).
+  RunStatus run(const std::atomic<bool>* interrupt = nullptr);
+  // Processes events up to time t (no recording); for tests and benchmarks.
+  void advanceTo(double t);
+
+  Snapshot snapshot() const;  // extrapolated to now()
+  double now() const { return now_; }
+  const Observables& counters() const { return obs_; }
+  const EngineConfig& config() const { return cfg_; }
+  int size() const { return static_cast<int>(p_.size()); }
+  // Current lab-frame position of particle i (extrapolated).
+  Vec2 position(int i) const;
+  Vec2 velocity(int i) const;
+
+ private:
+  // prediction (EventPrediction.cpp)
+  void predict(int i);
+  void predictCrossing(int i, const ParticleState& s, Event& best) const;
+  void predictWalls(int i, const ParticleState& s, Event& best) const;
+  void predictPairs(int i, const ParticleState& s, Event& best) const;
+  // execution (EventExecution.cpp)
+  void process(int i);
+  void doPair(int i, int j, Vec2 image_shift);
+  void doWall(int i, WallId wall);
+  void doCross(int i, CrossDirection dir);
+  void doTakeOff(int i);
+  void startRiding(int i, WallId wall);
+  // Approach speed below which a rider/flyer pair is at round-off level (see PairCollisionTime).
+  double riderApproachTolerance(double dvx, double dvz) const;
+  bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
+  bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
+  void noteCollision(int i, int partner);
+  bool tcElastic(int i, int j) const;
+  // state
+  void advance(int i, double t);
+  ParticleState extrapolated(int i, double t) const;
+  double particleEnergy(const ParticleState& s) const;
+  bool wallPushes(WallId wall, double t) const;
+  Vec2 imageShiftTo(int i, int j) const;
+  void record();
+
+  EngineConfig cfg_;
+  std::vector<ParticleState> p_;
+  std::vector<Event> ev_;
+  EventQueue queue_;
+  CellGrid cells_;
+  std::vector<SnapshotObserver*> observers_;
+  Observables obs_;
+  double now_ = 0;
+  double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0, ride_curvature_ = 0;
+  double z_floor_ = 0;        // lowest height a centre can reach (grid origin)
+  std::uint64_t records_ = 0;
+  double next_record_ = 0;
+  double virial_ = 0;         // sum of r_ij . dp_i since the last record (pressure)
+  double virial_since_ = 0;
+  bool rotation_ = false;
+};
+
+}  // namespace granwave

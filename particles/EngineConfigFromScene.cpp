@@ -1,0 +1,47 @@
+#include <algorithm>
+#include <cmath>
+
+#include "particles/EdSimulation.hpp"
+#include "scene/SceneDerived.hpp"
+
+namespace granwave {
+
+EngineConfig engineConfig(const Scene& scene) {
+  const SceneDerived dv = derive(scene);
+  EngineConfig c;
+  c.diameter = scene.particles.diameter;
+  c.mass = dv.mass;
+  c.gravity = scene.run.gravity;
+  c.width = scene.container.width;
+  c.height = scene.container.height;
+  c.periodic_x = scene.container.periodic_x;
+  c.periodic_z = scene.container.periodic_z;
+  c.plate = {dv.amplitude, dv.omega};
+  switch (scene.contact.restitution) {
+    case RestitutionKind::Constant: c.restitution = Restitution::constant(scene.contact.e); break;
+    case RestitutionKind::Dry: c.restitution = Restitution::dry(scene.contact.kappa); break;
+    case RestitutionKind::Wet:
+      c.restitution = Restitution::wet(scene.contact.e_inf, scene.contact.stokes_critical, dv.q);
+      break;
+  }
+  c.tangential = {scene.contact.friction, scene.contact.tangential_limit};
+  c.rough_walls = scene.contact.rough_walls;
+  c.tc = dv.tc;
+  c.rest_velocity = scene.contact.rest_velocity;
+  c.duration = scene.run.duration;
+  if (dv.driven) {
+    c.record_interval = 1.0 / (scene.drive.frequency * scene.run.phases_per_cycle);
+  } else {
+    c.record_interval =
+        scene.run.record_interval > 0 ? scene.run.record_interval : scene.run.duration / 100.0;
+  }
+  // Collapse: a collision rate per particle far above any physical one. The velocity scale is
+  // the largest of plate speed, sqrt(g d) and the thermal speed.
+  double v = std::max(dv.v0, std::sqrt(c.gravity * c.diameter));
+  if (scene.initial.temperature) v = std::max(v, std::sqrt(2.0 * *scene.initial.temperature / c.mass));
+  c.collapse_window = v > 0 ? 1e-3 * c.diameter / v : 1e-6;
+  c.collapse_collisions = 2000;
+  return c;
+}
+
+}  // namespace granwave

@@ -1,0 +1,288 @@
+// Execution ("what"): carry out the due event of a particle and re-predict whoever's
+// trajectory changed. Partners of stale pair events are re-predicted lazily.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "particles/EdSimulation.hpp"
+#include "particles/InelasticCollapse.hpp"
+#include "particles/PairCollisionTime.hpp"
+
+namespace granwave {
+
+void EdSimulation::process(int i) {
+  const Event e = ev_[i];
+  switch (e.kind) {
+    case EventKind::Pair:
+      if (p_[e.partner].counter != e.partner_counter) {
+        predict(i);  // the partner has collided since: stale
+      } else {
+        doPair(i, e.partner, imageShiftTo(i, e.partner));
+      }
+      return;
+    case EventKind::Wall:
+      doWall(i, static_cast<WallId>(e.partner));
+      return;
+    case EventKind::CellCross:
+      doCross(i, static_cast<CrossDirection>(e.partner));
+      return;
+    case EventKind::TakeOff:
+      doTakeOff(i);
+      return;
+    case EventKind::None:
+      queue_.update(i, std::numeric_limits<double>::infinity());
+      return;
+  }
+}
+
+Vec2 EdSimulation::imageShiftTo(int i, int j) const {
+  // Shift that brings j's position to the image nearest to i, from their cells.
+  const CellGeometry& g = cells_.geometry();
+  const int ci = cells_.cellOf(i), cj = cells_.cellOf(j);
+  Vec2 shift;
+  if (g.periodic_x) {
+    const int d = cells_.cx(cj) - cells_.cx(ci);
+    if (d > 1) shift.x = -g.lx();
+    if (d < -1) shift.x = g.lx();
+  }
+  if (g.periodic_z) {
+    const int d = cells_.cz(cj) - cells_.cz(ci);
+    if (d > 1) shift.z = -g.lz();
+    if (d < -1) shift.z = g.lz();
+  }
+  return shift;
+}
+
+bool EdSimulation::tcElastic(int i, int j) const {
+  // TC model (Luding & McNamara 1998): a collision is elastic if a partner collided within
+  // the last t_c. A wall (j < 0) is a partner with no memory.
+  if (cfg_.tc <= 0.0) return false;
+  if (now_ - p_[i].last_collision < cfg_.tc) return true;
+  return j >= 0 && now_ - p_[j].last_collision < cfg_.tc;
+}
+
+void EdSimulation::noteCollision(int i, int partner) {
+  ParticleState& s = p_[i];
+  s.last_collision = now_;
+  ++s.counter;
+  if (now_ - s.burst_start > cfg_.collapse_window) {
+    s.burst_start = now_;
+    s.burst = 0;
+  }
+  if (++s.burst > cfg_.collapse_collisions) {
+    const std::string with = partner >= 0 ? fmt::format("particle {}", partner) : "a wall";
+    throw InelasticCollapse(
+        fmt::format("inelastic collapse at t = {:.9f} s: particle {} collided {} times within "
+                    "{:.3g} s (last with {}){}",
+                    now_, i, s.burst, cfg_.collapse_window, with,
+                    cfg_.tc > 0 ? "; the TC model is on, so the scene itself is singular"
+                                : "; switch the TC model on (contact.tc = \"auto\")"),
+        now_, i, partner);
+  }
+}
+
+double EdSimulation::riderApproachTolerance(double dvx, double dvz) const {
+  return kApproachTolerance * (std::hypot(dvx, dvz) + std::sqrt(cfg_.gravity * cfg_.diameter));
+}
+
+bool EdSimulation::riderPresses(const ParticleState& rider, const ParticleState& other,
+                                Vec2 n_rider_to_other) const {
+  // Relative acceleration of a flying particle with respect to a rider is
+  // (0, -g - z_b''); the contact is compressed if it points against n (rider -> other).
+  if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return false;
+  return (cfg_.gravity + cfg_.plate.acceleration(now_)) * n_rider_to_other.z > 0.0;
+}
+
+bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
+  // A particle at rest on a rider that presses it moves rigidly with the rider's wall (a
+  // resting layer on a plate); the residual normal motion, at most rest_velocity, is lost.
+  // With friction, static friction makes the pair slide together (common horizontal
+  // velocity, momentum conserved); without it, a particle sliding into its support would
+  // graze it at once, so it stays in flight.
+  ParticleState& s = p_[i];
+  if (cfg_.tangential.friction <= 0.0 && r_rider_to_i.x * (s.vx - rider.vx) < 0.0) return false;
+  const double before = particleEnergy(s) + particleEnergy(rider);
+  if (cfg_.tangential.friction > 0.0) {
+    const double vx = 0.5 * (s.vx + rider.vx);
+    s.vx = vx;
+    rider.vx = vx;
+  }
+  s.motion = rider.motion;
+  s.ride_offset = s.z - cfg_.plate.height(now_);
+  s.vz = cfg_.plate.velocity(now_);
+  obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
+  ++obs_.collisions.rests;
+  return true;
+}
+
+void EdSimulation::doPair(int i, int j, Vec2 shift) {
+  advance(i, now_);
+  advance(j, now_);
+  ParticleState& a = p_[i];
+  ParticleState& b = p_[j];
+  const double rx = a.x - b.x - shift.x, rz = a.z - b.z - shift.z;
+  const double dist = std::hypot(rx, rz);
+  const Vec2 n{rx / dist, rz / dist};
+  const Vec2 va{a.vx, a.vz}, vb{b.vx, b.vz};
+  const double vn = pairNormalSpeed(n, va, vb);
+  // Which partner (if any) is a rider pressing the other: resting contacts attach.
+  const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
+  const bool pressed = (a_rides && riderPresses(a, b, {-n.x, -n.z})) ||
+                       (b_rides && riderPresses(b, a, n));
+  const double vrel = std::hypot(va.x - vb.x, va.z - vb.z);
+  const double tol = a.motion == b.motion || (a_rides && b_rides)
+                         ? kApproachTolerance * vrel
+                         : riderApproachTolerance(va.x - vb.x, va.z - vb.z);
+  if (!(vn > tol)) {
+    if (pressed && -vn <= cfg_.rest_velocity) {
+      ++a.counter;
+      ++b.counter;
+      if (a_rides) {
+        attachToRider(j, a, {-rx, -rz});
+      } else {
+        attachToRider(i, b, {rx, rz});
+      }
+    }
+    predict(i);  // otherwise not approaching after all (round-off): nothing happens
+    predict(j);
+    return;
+  }
+  const bool elastic = tcElastic(i, j);
+  const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
+  const double before = particleEnergy(a) + particleEnergy(b);
+  const PairCollisionResult c =
+      collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter, e_n, cfg_.tangential,
+                  rotation_ && !elastic);
+  a.vx = c.v1.x;
+  a.vz = c.v1.z;
+  b.vx = c.v2.x;
+  b.vz = c.v2.z;
+  a.omega = c.w1;
+  b.omega = c.w2;
+  obs_.dissipated_energy += before - particleEnergy(a) - particleEnergy(b);
+  virial_ += rx * c.impulse.x + rz * c.impulse.z;
+  ++obs_.collisions.pair;
+  if (elastic) ++obs_.collisions.tc_elastic;
+  noteCollision(i, j);
+  noteCollision(j, i);
+  const double separation = -pairNormalSpeed(n, c.v1, c.v2);
+  bool attached = false;
+  if (pressed && separation <= cfg_.rest_velocity) {
+    // Came to rest on a pressing rider: the rider's support takes the impulse, the other
+    // particle joins the rigid layer on the wall.
+    ParticleState& rider = a_rides ? a : b;
+    const double before_rider = particleEnergy(rider);
+    rider.vz = cfg_.plate.velocity(now_);
+    obs_.dissipated_energy += before_rider - particleEnergy(rider);
+    attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
+  }
+  if (!attached) {
+    // A collision with a vertical impulse knocks riders off their wall; one pushed into the
+    // wall hits it at once (and rests again if the wall still pushes it).
+    const double vw = cfg_.plate.velocity(now_);
+    if (a_rides && a.vz != vw) a.motion = Motion::Ballistic;
+    if (b_rides && b.vz != vw) b.motion = Motion::Ballistic;
+  }
+  predict(i);
+  predict(j);
+}
+
+void EdSimulation::doWall(int i, WallId wall) {
+  advance(i, now_);
+  ParticleState& s = p_[i];
+  Vec2 n, vw;
+  switch (wall) {
+    case kBottom: n = {0, 1}; vw = {0, cfg_.plate.velocity(now_)}; break;
+    case kLid: n = {0, -1}; vw = {0, cfg_.plate.velocity(now_)}; break;
+    case kLeft: n = {1, 0}; break;
+    case kRight: n = {-1, 0}; break;
+  }
+  const double approach = -((s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z);  // > 0 approaching
+  const bool pushes = wallPushes(wall, now_);
+  const bool resting = std::abs(approach) <= cfg_.rest_velocity && pushes;
+  if (approach <= 0.0 && !resting) {  // separating: the event was a grazing near-miss
+    predict(i);
+    return;
+  }
+  const double before = particleEnergy(s);
+  if (approach > 0.0) {
+    const bool elastic = tcElastic(i, -1);
+    const double e_n = elastic ? 1.0 : cfg_.restitution(approach);
+    const WallCollisionResult c = collideWall(n, {s.vx, s.vz}, s.omega, vw, cfg_.mass,
+                                              cfg_.diameter, e_n, cfg_.tangential,
+                                              cfg_.rough_walls && rotation_ && !elastic);
+    // Loss in the wall's frame (the wall's own velocity is unchanged by the impact):
+    // kinetic energy relative to the wall before minus after.
+    const double m = cfg_.mass;
+    const double inertia = m * cfg_.diameter * cfg_.diameter / 10.0;
+    const double rel_before = 0.5 * m * ((s.vx - vw.x) * (s.vx - vw.x) + (s.vz - vw.z) * (s.vz - vw.z)) +
+                              0.5 * inertia * s.omega * s.omega;
+    const double rel_after =
+        0.5 * m * ((c.v.x - vw.x) * (c.v.x - vw.x) + (c.v.z - vw.z) * (c.v.z - vw.z)) +
+        0.5 * inertia * c.w * c.w;
+    obs_.dissipated_energy += rel_before - rel_after;
+    s.vx = c.v.x;
+    s.vz = c.v.z;
+    s.omega = c.w;
+    ++obs_.collisions.wall;
+    if (elastic) ++obs_.collisions.tc_elastic;
+    noteCollision(i, -1);
+    obs_.wall_work += particleEnergy(s) - before + (rel_before - rel_after);
+  } else {
+    ++s.counter;
+  }
+  // Rest on (ride) the wall if the particle would leave it too slowly to matter while the
+  // wall pushes it: it then moves with the wall until the wall's pull exceeds gravity.
+  const double separation = (s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z;
+  if ((wall == kBottom || wall == kLid) && pushes && separation <= cfg_.rest_velocity) {
+    startRiding(i, wall);
+  } else if (s.motion != Motion::Ballistic &&
+             (s.vz != cfg_.plate.velocity(now_))) {
+    s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity
+  }
+  predict(i);
+}
+
+void EdSimulation::startRiding(int i, WallId wall) {
+  ParticleState& s = p_[i];
+  const double before = particleEnergy(s);
+  const double zb = cfg_.plate.height(now_);
+  s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
+  s.z = zb + s.ride_offset;
+  s.vz = cfg_.plate.velocity(now_);
+  s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
+  // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
+  const double after = particleEnergy(s);
+  obs_.dissipated_energy += before - after;
+  ++obs_.collisions.rests;
+}
+
+void EdSimulation::doTakeOff(int i) {
+  advance(i, now_);
+  p_[i].motion = Motion::Ballistic;
+  ++p_[i].counter;
+  predict(i);
+}
+
+void EdSimulation::doCross(int i, CrossDirection dir) {
+  advance(i, now_);
+  ParticleState& s = p_[i];
+  const CellGeometry& g = cells_.geometry();
+  const int c = cells_.cellOf(i);
+  int cx = cells_.cx(c), cz = cells_.cz(c);
+  switch (dir) {
+    case kCrossXPlus: ++cx; break;
+    case kCrossXMinus: --cx; break;
+    case kCrossZPlus: ++cz; break;
+    case kCrossZMinus: --cz; break;
+  }
+  if (cx >= g.nx) { cx = 0; s.x -= g.lx(); }
+  if (cx < 0) { cx = g.nx - 1; s.x += g.lx(); }
+  if (cz >= g.nz) { cz = 0; s.z -= g.lz(); }
+  if (cz < 0) { cz = g.nz - 1; s.z += g.lz(); }
+  cells_.remove(i);
+  cells_.insert(i, cells_.index(cx, cz));
+  predict(i);
+}
+
+}  // namespace granwave

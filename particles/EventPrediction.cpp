@@ -1,0 +1,197 @@
+// Prediction ("when"): the earliest event of one particle given everyone's current
+// trajectories. Const with respect to the state; only ev_ and the queue are written.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "particles/EdSimulation.hpp"
+#include "particles/GapRootFinder.hpp"
+#include "particles/PairCollisionTime.hpp"
+
+namespace granwave {
+
+namespace {
+
+inline void consider(Event& best, double t, EventKind kind, int partner, std::uint32_t counter = 0) {
+  if (t < best.time) best = {t, kind, partner, counter};
+}
+
+// Rising through z_hi under gravity: first root of z + v tau - g tau^2/2 = z_hi, v > 0.
+inline double riseTime(double gap, double v, double g) {
+  if (v <= 0.0) return std::numeric_limits<double>::infinity();
+  if (gap <= 0.0) return 0.0;
+  const double disc = v * v - 2.0 * g * gap;
+  if (disc < 0.0) return std::numeric_limits<double>::infinity();
+  return 2.0 * gap / (v + std::sqrt(disc));
+}
+
+// Falling through z_lo: positive root of z + v tau - g tau^2/2 = z_lo.
+inline double fallTime(double gap, double v, double g) {
+  if (g <= 0.0) {
+    if (v >= 0.0) return std::numeric_limits<double>::infinity();
+    return std::max(0.0, gap) / -v;
+  }
+  const double disc = std::max(0.0, v * v + 2.0 * g * gap);
+  return (v + std::sqrt(disc)) / g;
+}
+
+}  // namespace
+
+void EdSimulation::predict(int i) {
+  const ParticleState s = extrapolated(i, now_);
+  Event best;
+  predictCrossing(i, s, best);
+  predictWalls(i, s, best);
+  predictPairs(i, s, best);
+  ev_[i] = best;
+  queue_.update(i, best.time);
+}
+
+void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) const {
+  const CellGeometry& g = cells_.geometry();
+  const int c = cells_.cellOf(i);
+  const int cx = cells_.cx(c), cz = cells_.cz(c);
+  const double xlo = cells_.xLow(c), zlo = cells_.zLow(c);
+  if (s.vx > 0.0 && (g.periodic_x || cx + 1 < g.nx))
+    consider(best, now_ + std::max(0.0, xlo + g.wx - s.x) / s.vx, EventKind::CellCross, kCrossXPlus);
+  if (s.vx < 0.0 && (g.periodic_x || cx > 0))
+    consider(best, now_ + std::max(0.0, s.x - xlo) / -s.vx, EventKind::CellCross, kCrossXMinus);
+
+  const bool up_open = g.periodic_z || cz + 1 < g.nz;
+  const bool down_open = g.periodic_z || cz > 0;
+  if (s.motion == Motion::Ballistic) {
+    if (up_open) consider(best, now_ + riseTime(zlo + g.wz - s.z, s.vz, cfg_.gravity),
+                          EventKind::CellCross, kCrossZPlus);
+    if (down_open) consider(best, now_ + fallTime(s.z - zlo, s.vz, cfg_.gravity),
+                            EventKind::CellCross, kCrossZMinus);
+    return;
+  }
+  // Riding: the height is the wall's, z(t) = z_b(t) + const; its curvature is bounded by
+  // A omega^2, so the gap root finder gives the exact crossing.
+  const double offset = s.z - cfg_.plate.height(now_);
+  const PlateMotion& plate = cfg_.plate;
+  if (up_open) {
+    const double zhi = zlo + g.wz;
+    auto gap = [&](double t) { return GapRate{zhi - plate.height(t) - offset, -plate.velocity(t)}; };
+    consider(best, firstClosingRoot(gap, ride_curvature_, now_, best.time), EventKind::CellCross,
+             kCrossZPlus);
+  }
+  if (down_open) {
+    auto gap = [&](double t) { return GapRate{plate.height(t) + offset - zlo, plate.velocity(t)}; };
+    consider(best, firstClosingRoot(gap, ride_curvature_, now_, best.time), EventKind::CellCross,
+             kCrossZMinus);
+  }
+}
+
+void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) const {
+  (void)i;
+  const double r = 0.5 * cfg_.diameter;
+  if (!cfg_.periodic_x) {
+    if (s.vx < 0.0)
+      consider(best, now_ + std::max(0.0, s.x - r) / -s.vx, EventKind::Wall, kLeft);
+    if (s.vx > 0.0)
+      consider(best, now_ + std::max(0.0, cfg_.width - r - s.x) / s.vx, EventKind::Wall, kRight);
+  }
+  if (cfg_.periodic_z) return;
+
+  const PlateMotion& plate = cfg_.plate;
+  const double g = cfg_.gravity;
+  if (s.motion != Motion::Ballistic) {
+    // Riding ends where the wall stops pushing: bottom while sin(wt) < g/(A w^2), lid while
+    // sin(wt) > g/(A w^2) (see wallPushes).
+    const double aw2 = plate.maxAcceleration();
+    if (aw2 <= g || plate.omega <= 0.0) return;  // the bottom holds forever, the lid never
+    const double phi_star = std::asin(g / aw2);
+    const double phi_leave = s.motion == Motion::RideBottom ? phi_star : std::numbers::pi - phi_star;
+    const double two_pi = 2.0 * std::numbers::pi;
+    const double phase = plate.omega * now_;
+    double k = std::ceil((phase - phi_leave) / two_pi);
+    double t = (phi_leave + k * two_pi) / plate.omega;
+    if (t <= now_) t = (phi_leave + (k + 1) * two_pi) / plate.omega;
+    consider(best, t, EventKind::TakeOff, -1);
+    return;
+  }
+
+  const double t0 = now_;
+  const double tol = 1e-10 * cfg_.diameter;
+  // Bottom: h = z(t) - d/2 - z_b(t), h'' = -g - z_b'' >= -(g + A w^2).
+  {
+    auto gap = [&](double t) {
+      const double tau = t - t0;
+      return GapRate{s.z + (s.vz - 0.5 * g * tau) * tau - r - plate.height(t),
+                     s.vz - g * tau - plate.velocity(t)};
+    };
+    const GapRate h0 = gap(t0);
+    if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kBottom, t0)) {
+      consider(best, t0, EventKind::Wall, kBottom);  // resting contact: starts riding
+    } else {
+      consider(best, firstClosingRoot(gap, bottom_curvature_, t0, best.time, {tol}),
+               EventKind::Wall, kBottom);
+    }
+  }
+  // Lid: h = z_b(t) + L_z - d/2 - z(t), h'' = z_b'' + g >= g - A w^2.
+  {
+    auto gap = [&](double t) {
+      const double tau = t - t0;
+      return GapRate{plate.height(t) + cfg_.height - r - s.z - (s.vz - 0.5 * g * tau) * tau,
+                     plate.velocity(t) - s.vz + g * tau};
+    };
+    const GapRate h0 = gap(t0);
+    if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kLid, t0)) {
+      consider(best, t0, EventKind::Wall, kLid);
+    } else {
+      consider(best, firstClosingRoot(gap, lid_curvature_, t0, best.time, {tol}), EventKind::Wall,
+               kLid);
+    }
+  }
+}
+
+void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) const {
+  const double d = cfg_.diameter;
+  CellGrid::Neighbour nb[9];
+  const int m = cells_.neighbours(cells_.cellOf(i), nb);
+  for (int c = 0; c < m; ++c) {
+    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+      if (j == i) continue;
+      const ParticleState o = extrapolated(j, now_);
+      const double rx = s.x - o.x - nb[c].shift_x;
+      const double rz = s.z - o.z - nb[c].shift_z;
+      const bool linear = s.motion == o.motion || (s.motion != Motion::Ballistic &&
+                                                   o.motion != Motion::Ballistic);
+      if (linear) {
+        // Same acceleration for both: the relative motion is a straight line.
+        const double tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d);
+        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, p_[j].counter};
+        continue;
+      }
+      // One rides a wall, the other flies: the relative acceleration is bounded by
+      // g + A w^2, and so is the curvature of the distance |r| - d (its other term is >= 0).
+      // Search only until either partner's next event: both re-predict then.
+      const double horizon = std::min(best.time, queue_.time(j));
+      const double sx = nb[c].shift_x, sz = nb[c].shift_z;
+      {
+        const double dist = std::hypot(rx, rz);
+        const double rate = (rx * (s.vx - o.vx) + rz * (s.vz - o.vz)) / dist;
+        const Vec2 n{rx / dist, rz / dist};  // from j to i
+        const bool presses = s.motion == Motion::Ballistic ? riderPresses(o, s, n)
+                                                           : riderPresses(s, o, {-n.x, -n.z});
+        if (dist - d <= 1e-10 * d && std::abs(rate) <= cfg_.rest_velocity && presses) {
+          if (now_ < best.time) best = {now_, EventKind::Pair, j, p_[j].counter};
+          continue;
+        }
+      }
+      auto gap = [&](double t) {
+        const ParticleState a = extrapolated(i, t);
+        const ParticleState b = extrapolated(j, t);
+        const double dx = a.x - b.x - sx, dz = a.z - b.z - sz;
+        const double dist = std::hypot(dx, dz);
+        return GapRate{dist - d, (dx * (a.vx - b.vx) + dz * (a.vz - b.vz)) / dist};
+      };
+      const double rate_tol = riderApproachTolerance(s.vx - o.vx, s.vz - o.vz);
+      const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, rate_tol});
+      if (t < best.time) best = {t, EventKind::Pair, j, p_[j].counter};
+    }
+  }
+}
+
+}  // namespace granwave

@@ -1,0 +1,31 @@
+#pragma once
+// Time until two spheres of diameter d, moving with constant relative velocity v from
+// relative position r, first touch: smallest tau >= 0 with |r + v tau| = d.
+// Gravity is the same for all particles, so pair relative motion is a straight line even
+// under gravity. Cancellation-free root 2c / (-b + sqrt(b^2 - ac)) as in DynamO's
+// ray-sphere kernel; a slightly overlapping but approaching pair collides at once (tau = 0);
+// a receding pair never collides. A touching pair whose approach is at round-off level
+// (relative to |v|; e.g. right after an e_n = 0 collision) is not approaching: colliding it
+// "at once" would change nothing and repeat forever.
+inline constexpr double kApproachTolerance = 1e-9;
+#include <cmath>
+#include <limits>
+
+namespace granwave {
+
+inline double pairCollisionTime(double rx, double rz, double vx, double vz, double diameter) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const double b = rx * vx + rz * vz;
+  if (b >= 0.0) return kNever;
+  const double c = rx * rx + rz * rz - diameter * diameter;
+  const double a = vx * vx + vz * vz;
+  if (c <= 0.0) {
+    return b * b > kApproachTolerance * kApproachTolerance * a * diameter * diameter ? 0.0
+                                                                                    : kNever;
+  }
+  const double disc = b * b - a * c;
+  if (disc < 0.0) return kNever;
+  return c / (-b + std::sqrt(disc));
+}
+
+}  // namespace granwave

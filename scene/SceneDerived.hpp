@@ -1,0 +1,31 @@
+#pragma once
+// Quantities derived from a Scene by the paper's formulas (Methods section):
+//   A = Gamma g / (2 pi f)^2, v0 = Gamma g / (2 pi f), T0 = m v0^2 / 2,
+//   m = rho pi d^3 / 6, I = m d^2 / 10,
+//   t_c = 2.94 (m/k)^(2/5) v0^(-1/5) with k = 4 E sqrt(d) / (15 (1 - sigma^2)),
+//   q = rho d / (9 eta), v_c = St_c / q.
+#include "scene/Scene.hpp"
+
+namespace granwave {
+
+struct SceneDerived {
+  double mass = 0;          // kg
+  double inertia = 0;       // kg m^2
+  double omega = 0;         // rad/s, 2 pi f (0 without drive)
+  double amplitude = 0;     // m, A
+  double gamma = 0;         // peak plate acceleration / g
+  double v0 = 0;            // m/s, peak plate velocity
+  double T0 = 0;            // J, m v0^2 / 2
+  double hertz_k = 0;       // Pa m^(1/2), k of the TC formula
+  double tc = 0;            // s, TC time actually used (0 when TC is off)
+  double q = 0;             // s/m, Stokes-number factor
+  double v_c = 0;           // m/s, wet onset velocity
+  bool driven = false;
+};
+
+// Paper's TC time for mass m, Hertz constant k, collision velocity v.
+double tcContactDuration(double mass, double hertz_k, double velocity);
+
+SceneDerived derive(const Scene& scene);
+
+}  // namespace granwave

@@ -1,0 +1,30 @@
+#pragma once
+// The human-readable summary of a particle run (stdout of `granwave simulate`).
+#include <string>
+#include <vector>
+
+#include "coarse_grain/PeriodDetector.hpp"
+#include "particles/Snapshot.hpp"
+#include "scene/Scene.hpp"
+
+namespace granwave {
+
+struct RunSummaryInput {
+  const Scene* scene = nullptr;
+  std::string scene_name;
+  Observables final_obs;       // counters at the end
+  double simulated = 0;        // s
+  double wall = 0;             // s
+  double tc = 0;               // s
+  bool completed = true;
+  std::vector<double> com_height;  // one per record (driven: M per cycle)
+  double energy_balance_error = 0;  // J, |E - E0 - W + D|
+  double initial_energy = 0;
+};
+
+// Period of the centre-of-mass motion, if the run is driven and long enough (12 cycles
+// after the discarded transient: the first fifth of the run, at least 3 cycles).
+bool summarisePeriod(const RunSummaryInput& in, PeriodResult& out, int& discarded);
+std::string formatRunSummary(const RunSummaryInput& in);
+
+}  // namespace granwave

@@ -1,0 +1,25 @@
+#pragma once
+// `granwave simulate SCENE.toml [-o RUN.h5] [--set section.key=value]...`: runs the ED
+// engine on a scene, writes the H5MD run atomically and prints a summary on stdout.
+#include <string>
+#include <vector>
+
+namespace CLI {
+class App;
+}
+
+namespace granwave {
+
+struct SimulateOptions {
+  std::string scene_path;
+  std::string output;  // default: <scene stem>.h5 in the working directory
+  std::vector<std::string> overrides;
+  bool quiet = false;  // no progress line
+  bool no_output = false;  // run and summarise only
+};
+
+void addSimulateCommand(CLI::App& app, SimulateOptions& options);
+// Returns the process exit code; throws on errors (main reports them in one line).
+int runSimulate(const SimulateOptions& options, const std::string& command_line);
+
+}  // namespace granwave

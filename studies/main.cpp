@@ -1,0 +1,37 @@
+// granwave: when does a continuum description of a vibrated granular layer agree with the
+// particles? One program, subcommands; errors are reported once, here, in one line.
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include <exception>
+#include <string>
+
+#include "particles/InelasticCollapse.hpp"
+#include "scene/SceneParser.hpp"
+#include "studies/SimulateCommand.hpp"
+#include "studies/Version.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
+  app.set_version_flag("--version", std::string("granwave ") + granwave::kVersion);
+  app.require_subcommand(1);
+  granwave::SimulateOptions simulate;
+  granwave::addSimulateCommand(app, simulate);
+  CLI11_PARSE(app, argc, argv);
+
+  std::string command_line;
+  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
+  try {
+    if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
+  } catch (const granwave::SceneError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return 2;
+  } catch (const granwave::InelasticCollapse& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,414 @@
+// Scene files: keys read into the Scene, --set overrides, the shipped scenes, the round trip
+// through sceneToToml, and the parse-level errors (syntax, unknown keys, types, bad --set).
+// The semantic (range, geometry) errors are in SceneValidationTest.cpp.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "scene/SceneParser.hpp"
+
+namespace granwave {
+namespace {
+
+using ::testing::HasSubstr;
+
+void expectSameScene(const Scene& a, const Scene& b) {
+  EXPECT_EQ(a.particles.count, b.particles.count);
+  EXPECT_EQ(a.particles.diameter, b.particles.diameter);
+  EXPECT_EQ(a.particles.density, b.particles.density);
+  EXPECT_EQ(a.particles.youngs_modulus, b.particles.youngs_modulus);
+  EXPECT_EQ(a.particles.poisson_ratio, b.particles.poisson_ratio);
+  EXPECT_EQ(a.container.width, b.container.width);
+  EXPECT_EQ(a.container.height, b.container.height);
+  EXPECT_EQ(a.container.periodic_x, b.container.periodic_x);
+  EXPECT_EQ(a.container.periodic_z, b.container.periodic_z);
+  EXPECT_EQ(a.drive.frequency, b.drive.frequency);
+  EXPECT_EQ(a.drive.gamma, b.drive.gamma);
+  EXPECT_EQ(a.drive.amplitude, b.drive.amplitude);
+  EXPECT_EQ(a.contact.restitution, b.contact.restitution);
+  EXPECT_EQ(a.contact.e, b.contact.e);
+  EXPECT_EQ(a.contact.kappa, b.contact.kappa);
+  EXPECT_EQ(a.contact.e_inf, b.contact.e_inf);
+  EXPECT_EQ(a.contact.stokes_critical, b.contact.stokes_critical);
+  EXPECT_EQ(a.contact.viscosity, b.contact.viscosity);
+  EXPECT_EQ(a.contact.friction, b.contact.friction);
+  EXPECT_EQ(a.contact.tangential_limit, b.contact.tangential_limit);
+  EXPECT_EQ(a.contact.rough_walls, b.contact.rough_walls);
+  EXPECT_EQ(a.contact.tc_enabled, b.contact.tc_enabled);
+  EXPECT_EQ(a.contact.tc_time, b.contact.tc_time);
+  EXPECT_EQ(a.contact.rest_velocity, b.contact.rest_velocity);
+  EXPECT_EQ(a.initial.temperature, b.initial.temperature);
+  EXPECT_EQ(a.initial.placement, b.initial.placement);
+  EXPECT_EQ(a.run.duration, b.run.duration);
+  EXPECT_EQ(a.run.phases_per_cycle, b.run.phases_per_cycle);
+  EXPECT_EQ(a.run.record_interval, b.run.record_interval);
+  EXPECT_EQ(a.run.trajectory_stride, b.run.trajectory_stride);
+  EXPECT_EQ(a.run.seed, b.run.seed);
+  EXPECT_EQ(a.run.gravity, b.run.gravity);
+  EXPECT_EQ(a.hydro.cells, b.hydro.cells);
+  EXPECT_EQ(a.hydro.rtol, b.hydro.rtol);
+  EXPECT_EQ(a.hydro.atol, b.hydro.atol);
+  EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);
+}
+
+std::string sceneFile(const char* name) {
+  return std::string(GRANWAVE_SOURCE_DIR) + "/scenes/" + name;
+}
+
+TEST(SceneParser, EmptyFileGivesThePaperDefaults) {
+  expectSameScene(parseSceneString(""), Scene{});
+}
+
+TEST(SceneParser, ReadsEveryKeyOfEverySection) {
+  const Scene s = parseSceneString(R"(
+    [particles]
+    count = 50
+    diameter = 0.003
+    density = 2500.0
+    youngs_modulus = 7e10
+    poisson_ratio = 0.3
+    [container]
+    width = 0.09
+    height = 0.12
+    periodic_x = true
+    periodic_z = false
+    [drive]
+    frequency = 20.0
+    amplitude = 0.001
+    [contact]
+    restitution = "constant"
+    e = 0.8
+    kappa = 0.2
+    e_inf = 0.8
+    stokes_critical = 30.0
+    viscosity = 2e-3
+    friction = 0.0
+    tangential_limit = -1.0
+    rough_walls = true
+    tc = 1e-5
+    rest_velocity = 1e-5
+    [initial]
+    temperature = 1e-7
+    placement = "lattice"
+    [run]
+    duration = 2.5
+    phases_per_cycle = 50
+    record_interval = 0.01
+    trajectory_stride = 10
+    seed = 42
+    gravity = 0.0
+    [hydro]
+    cells = 100
+    rtol = 1e-5
+    atol = 1e-8
+    restitution_model = "constant"
+  )");
+  EXPECT_EQ(s.particles.count, 50);
+  EXPECT_EQ(s.particles.youngs_modulus, 7e10);
+  EXPECT_TRUE(s.container.periodic_x);
+  EXPECT_EQ(s.drive.amplitude, 0.001);
+  EXPECT_FALSE(s.drive.gamma.has_value());
+  EXPECT_EQ(s.contact.restitution, RestitutionKind::Constant);
+  EXPECT_EQ(s.contact.tangential_limit, -1.0);
+  EXPECT_TRUE(s.contact.rough_walls);
+  EXPECT_EQ(s.contact.tc_time, 1e-5);
+  EXPECT_EQ(s.initial.temperature, 1e-7);
+  EXPECT_EQ(s.initial.placement, InitialPlacement::Lattice);
+  EXPECT_EQ(s.run.trajectory_stride, 10);
+  EXPECT_EQ(s.run.seed, 42u);
+  EXPECT_EQ(s.run.gravity, 0.0);
+  EXPECT_EQ(s.hydro.cells, 100);
+  EXPECT_EQ(s.hydro.restitution_model, HydroRestitutionModel::Constant);
+}
+
+TEST(SceneParser, AcceptsIntegersWhereNumbersAreExpected) {
+  const Scene s = parseSceneString("[drive]\nfrequency = 12\ngamma = 3\n[run]\nduration = 2\n");
+  EXPECT_EQ(s.drive.frequency, 12.0);
+  EXPECT_EQ(s.drive.gamma, 3.0);
+  EXPECT_EQ(s.run.duration, 2.0);
+}
+
+TEST(SceneParser, AmplitudeClearsTheDefaultGamma) {
+  const Scene s = parseSceneString("[drive]\namplitude = 0.002\n");
+  EXPECT_EQ(s.drive.amplitude, 0.002);
+  EXPECT_FALSE(s.drive.gamma.has_value());
+}
+
+TEST(SceneParser, TcAcceptsAutoOffAndSeconds) {
+  const Scene autoTc = parseSceneString("[contact]\ntc = \"auto\"\n");
+  EXPECT_TRUE(autoTc.contact.tc_enabled);
+  EXPECT_FALSE(autoTc.contact.tc_time.has_value());
+  const Scene off = parseSceneString("[contact]\ntc = \"off\"\n");
+  EXPECT_FALSE(off.contact.tc_enabled);
+  const Scene seconds = parseSceneString("[contact]\ntc = 3e-6\n");
+  EXPECT_TRUE(seconds.contact.tc_enabled);
+  EXPECT_EQ(seconds.contact.tc_time, 3e-6);
+}
+
+TEST(SceneParser, TemperaturePaperMeansThePapersQuietStart) {
+  EXPECT_FALSE(parseSceneString("[initial]\ntemperature = \"paper\"\n").initial.temperature);
+  EXPECT_EQ(parseSceneString("[initial]\ntemperature = 0\n").initial.temperature, 0.0);
+}
+
+TEST(SceneParser, UndrivenSceneWithoutGravityOrTemperatureIsAllowed) {
+  const Scene s = parseSceneString("[drive]\nfrequency = 0\n[run]\ngravity = 0\n");
+  EXPECT_EQ(s.drive.frequency, 0.0);
+  EXPECT_EQ(s.run.gravity, 0.0);
+}
+
+TEST(SceneParser, FullyPeriodicUndrivenBoxIsAllowed) {
+  const Scene s = parseSceneString(
+      "[container]\nperiodic_x = true\nperiodic_z = true\n[drive]\nfrequency = 0\n"
+      "[run]\ngravity = 0\n[initial]\ntemperature = 1e-6\n");
+  EXPECT_TRUE(s.container.periodic_x && s.container.periodic_z);
+}
+
+TEST(SceneFiles, PaperDryIsThePapersDefaultScene) {
+  expectSameScene(parseSceneFile(sceneFile("paper-dry.toml")), Scene{});
+}
+
+TEST(SceneFiles, PaperWetDiffersFromDefaultsOnlyByTheWetLaw) {
+  Scene wet;
+  wet.contact.restitution = RestitutionKind::Wet;
+  expectSameScene(parseSceneFile(sceneFile("paper-wet.toml")), wet);
+}
+
+TEST(SceneFiles, MissingFileIsASceneErrorNamingThePath) {
+  EXPECT_THROW(
+      {
+        try {
+          parseSceneFile("/nonexistent/scene.toml");
+        } catch (const SceneError& e) {
+          EXPECT_THAT(e.what(), HasSubstr("/nonexistent/scene.toml"));
+          throw;
+        }
+      },
+      SceneError);
+}
+
+// --- overrides ---
+
+TEST(SceneOverrides, BareWordIsAString) {
+  const Scene s = parseSceneString("", {"contact.restitution=wet"});
+  EXPECT_EQ(s.contact.restitution, RestitutionKind::Wet);
+}
+
+TEST(SceneOverrides, QuotedStringNumberBooleanAndTcOffAreTomlValues) {
+  const Scene s =
+      parseSceneString("[drive]\ngamma = 4\n",
+                       {"contact.restitution=\"constant\"", "drive.gamma=3.5",
+                        "container.periodic_x=true", "contact.tc=off", "particles.count=200"});
+  EXPECT_EQ(s.contact.restitution, RestitutionKind::Constant);
+  EXPECT_EQ(s.drive.gamma, 3.5);
+  EXPECT_TRUE(s.container.periodic_x);
+  EXPECT_FALSE(s.contact.tc_enabled);
+  EXPECT_EQ(s.particles.count, 200);
+}
+
+TEST(SceneOverrides, LaterOverrideWinsAndSectionsMissingFromTheFileAreCreated) {
+  const Scene s = parseSceneString("", {"hydro.cells=100", "hydro.cells=200"});
+  EXPECT_EQ(s.hydro.cells, 200);
+}
+
+TEST(SceneOverrides, AmplitudeReplacesAGammaGivenInTheFile) {
+  const Scene s = parseSceneString("[drive]\ngamma = 3\n", {"drive.amplitude=0.004"});
+  EXPECT_EQ(s.drive.amplitude, 0.004);
+  EXPECT_FALSE(s.drive.gamma.has_value());
+}
+
+TEST(SceneOverrides, GammaReplacesAnAmplitudeGivenInTheFile) {
+  const Scene s = parseSceneString("[drive]\namplitude = 0.004\n", {"drive.gamma=2.5"});
+  EXPECT_EQ(s.drive.gamma, 2.5);
+  EXPECT_FALSE(s.drive.amplitude.has_value());
+}
+
+// --- round trip ---
+
+TEST(SceneToToml, RoundTripsTheDefaults) {
+  const Scene s;
+  expectSameScene(parseSceneString(sceneToToml(s)), s);
+}
+
+TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
+  const Scene s = parseSceneString("[drive]\nfrequency = 17.3\namplitude = 0.0012345678901234\n",
+                                   {"particles.count=123",
+                                    "particles.diameter=0.0021",
+                                    "particles.density=2400.5",
+                                    "particles.youngs_modulus=5.5e10",
+                                    "particles.poisson_ratio=-0.1",
+                                    "container.width=0.07",
+                                    "container.height=0.05",
+                                    "container.periodic_x=true",
+                                    "contact.restitution=constant",
+                                    "contact.e=0.7",
+                                    "contact.kappa=0.12",
+                                    "contact.e_inf=0.8",
+                                    "contact.stokes_critical=33",
+                                    "contact.viscosity=1.1e-3",
+                                    "contact.friction=0.3",
+                                    "contact.tangential_limit=-0.2",
+                                    "contact.rough_walls=true",
+                                    "contact.tc=1.5e-6",
+                                    "contact.rest_velocity=2e-6",
+                                    "initial.temperature=3e-7",
+                                    "initial.placement=lattice",
+                                    "run.duration=0.1",
+                                    "run.phases_per_cycle=7",
+                                    "run.record_interval=0.003",
+                                    "run.trajectory_stride=3",
+                                    "run.seed=9007199254740993",
+                                    "run.gravity=9.80665",
+                                    "hydro.cells=64",
+                                    "hydro.rtol=1e-7",
+                                    "hydro.atol=1e-11",
+                                    "hydro.restitution_model=constant"});
+  const std::string text = sceneToToml(s);
+  expectSameScene(parseSceneString(text), s);
+  EXPECT_EQ(sceneToToml(parseSceneString(text)), text);
+}
+
+TEST(SceneToToml, RoundTripsDoublesBitForBit) {
+  Scene s;
+  s.particles.density = 0.1 + 0.2;
+  s.particles.youngs_modulus = 1.2345678901234567e11;
+  s.contact.viscosity = 1.0 / 3.0;
+  s.contact.rest_velocity = 5e-324;
+  s.hydro.atol = 1e-300;
+  s.run.seed = 9223372036854775807u;
+  expectSameScene(parseSceneString(sceneToToml(s)), s);
+}
+
+TEST(SceneToToml, RoundTripsTcOffAndAnUndrivenPeriodicBox) {
+  const Scene s = parseSceneString(
+      "", {"contact.tc=off", "drive.frequency=0", "container.periodic_z=true", "run.gravity=0"});
+  expectSameScene(parseSceneString(sceneToToml(s)), s);
+}
+
+TEST(SceneToToml, WritesEverySectionAndKey) {
+  const std::string text = sceneToToml(Scene{});
+  for (const char* key :
+       {"[particles]", "count =", "poisson_ratio =", "[container]", "periodic_z =", "[drive]",
+        "gamma = 4.0", "[contact]", "restitution = \"dry\"", "tc = \"auto\"",
+        "rest_velocity =", "[initial]", "temperature = \"paper\"", "placement = \"random\"",
+        "[run]", "seed = 1", "[hydro]", "restitution_model = \"velocity\""})
+    EXPECT_THAT(text, HasSubstr(key));
+}
+
+// --- parse-level errors: one line, naming the file, the key and what is valid ---
+
+struct ErrorCase {
+  const char* name;
+  const char* toml;
+  std::vector<std::string> overrides;
+  std::vector<std::string> mentions;
+};
+
+void PrintTo(const ErrorCase& c, std::ostream* os) { *os << c.name; }
+
+class SceneParseError : public ::testing::TestWithParam<ErrorCase> {};
+
+TEST_P(SceneParseError, IsOneLineNamingFileKeyAndRemedy) {
+  const ErrorCase& c = GetParam();
+  try {
+    parseSceneString(c.toml, c.overrides, "scene.toml");
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("scene.toml", 0), 0u) << message;
+    for (const auto& m : c.mentions) EXPECT_THAT(message, HasSubstr(m));
+  }
+}
+
+const ErrorCase kParseErrors[] = {
+    {"TomlSyntaxErrorGivesLineAndColumn",
+     "[drive]\ngamma = = 3\n",
+     {},
+     {"scene.toml:2:", "TOML syntax error"}},
+    {"UnknownSectionSuggestsTheClosest",
+     "[partcles]\ncount = 3\n",
+     {},
+     {"unknown section [partcles]", "did you mean 'particles'", "valid sections"}},
+    {"UnknownKeySuggestsTheClosest",
+     "[drive]\ngama = 3\n",
+     {},
+     {"scene.toml:2:", "'drive.gama'", "did you mean 'drive.gamma'", "frequency, gamma"}},
+    {"KeyInTheWrongSectionSuggestsItsSection",
+     "[particles]\nfriction = 0.3\n",
+     {},
+     {"'particles.friction'", "did you mean 'contact.friction'"}},
+    {"UnknownKeyFarFromAnyGivesNoSuggestion",
+     "[run]\nxyzzyplugh = 1\n",
+     {},
+     {"'run.xyzzyplugh'", "valid keys in [run]"}},
+    {"KeyOutsideAnySection", "count = 300\n", {}, {"count = 300", "under [particles]"}},
+    {"SectionThatIsNotATable", "drive = 5\n", {}, {"drive = 5", "expected a table [drive]"}},
+    {"NumberGivenAsString",
+     "[drive]\ngamma = \"high\"\n",
+     {},
+     {"drive.gamma = \"high\"", "expected a finite number"}},
+    {"NotFiniteNumber", "[run]\nduration = inf\n", {}, {"run.duration = inf", "finite"}},
+    {"FloatWhereIntegerExpected",
+     "[particles]\ncount = 300.5\n",
+     {},
+     {"particles.count = 300.5", "expected an integer"}},
+    {"IntegerTooLarge",
+     "[hydro]\ncells = 9999999999\n",
+     {},
+     {"hydro.cells = 9999999999", "an integer in"}},
+    {"NegativeSeed", "[run]\nseed = -1\n", {}, {"run.seed = -1", "an integer in [0,"}},
+    {"BooleanGivenAsNumber",
+     "[container]\nperiodic_x = 1\n",
+     {},
+     {"container.periodic_x = 1", "expected true or false"}},
+    {"UnknownRestitutionLaw",
+     "[contact]\nrestitution = \"moist\"\n",
+     {},
+     {"contact.restitution = \"moist\"", R"(one of "constant", "dry", "wet")"}},
+    {"UnknownPlacement",
+     "[initial]\nplacement = \"grid\"\n",
+     {},
+     {"initial.placement", "\"lattice\""}},
+    {"UnknownHydroModel",
+     "[hydro]\nrestitution_model = 1\n",
+     {},
+     {"hydro.restitution_model = 1", "\"velocity\""}},
+    {"UnknownTcWord",
+     "[contact]\ntc = \"sometimes\"\n",
+     {},
+     {"contact.tc = \"sometimes\"", R"("auto", "off" or a time in seconds)"}},
+    {"UnknownTemperatureWord",
+     "[initial]\ntemperature = \"hot\"\n",
+     {},
+     {"initial.temperature = \"hot\"", "\"paper\""}},
+    {"GammaAndAmplitudeBothGiven",
+     "[drive]\ngamma = 3\namplitude = 0.001\n",
+     {},
+     {"drive.gamma = 3", "drive.amplitude = 0.001", "not both"}},
+    {"OverrideWithoutEquals", "", {"drive.gamma"}, {"--set 'drive.gamma'", "section.key=value"}},
+    {"OverrideWithoutSection", "", {"gamma=3"}, {"--set 'gamma=3'", "section.key=value"}},
+    {"OverrideOfUnknownKey",
+     "",
+     {"drive.gama=3"},
+     {"--set drive.gama=3", "did you mean 'drive.gamma'"}},
+    {"OverrideOfUnknownSection",
+     "",
+     {"drvie.gamma=3"},
+     {"--set drvie.gamma=3", "unknown section [drvie]", "did you mean 'drive'"}},
+    {"OverrideOfWrongType",
+     "",
+     {"drive.gamma=3.5x"},
+     {"(--set)", "drive.gamma = \"3.5x\"", "expected a finite number"}},
+    {"OverridesGivingGammaAndAmplitude",
+     "",
+     {"drive.gamma=3", "drive.amplitude=0.001"},
+     {"(--set)", "not both"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(Scene, SceneParseError, ::testing::ValuesIn(kParseErrors),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+}  // namespace
+}  // namespace granwave

@@ -1,0 +1,153 @@
+// Semantic checks of a scene (docs/scenes.md, "Valid range" column): each bad value gives a
+// one-line SceneError naming the file (with the line of the value), the key, the value and
+// what is valid; cross-key checks (geometry, drive, packing) name the key that must change.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "scene/SceneParser.hpp"
+
+namespace granwave {
+namespace {
+
+using ::testing::HasSubstr;
+
+struct InvalidCase {
+  const char* name;
+  const char* toml;
+  std::vector<std::string> mentions;  // the first one is "key = value"
+};
+
+void PrintTo(const InvalidCase& c, std::ostream* os) { *os << c.name; }
+
+class SceneInvalid : public ::testing::TestWithParam<InvalidCase> {};
+
+TEST_P(SceneInvalid, IsRejectedWithOneLineNamingFileKeyValueAndValidRange) {
+  const InvalidCase& c = GetParam();
+  try {
+    parseSceneString(c.toml, {}, "scene.toml");
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_EQ(message.rfind("scene.toml", 0), 0u) << message;
+    for (const auto& m : c.mentions) EXPECT_THAT(message, HasSubstr(m));
+  }
+}
+
+const InvalidCase kInvalid[] = {
+    {"ZeroCount", "[particles]\ncount = 0", {"scene.toml:2: particles.count = 0", ">= 1"}},
+    {"ZeroDiameter", "[particles]\ndiameter = 0", {"particles.diameter = 0.0", "> 0"}},
+    {"NegativeDensity", "[particles]\ndensity = -1", {"particles.density = -1.0", "> 0"}},
+    {"ZeroYoungsModulus",
+     "[particles]\nyoungs_modulus = 0",
+     {"particles.youngs_modulus = 0.0", "> 0"}},
+    {"PoissonRatioAtOneHalf",
+     "[particles]\npoisson_ratio = 0.5",
+     {"particles.poisson_ratio = 0.5", "(-1.0, 0.5)"}},
+    {"PoissonRatioAtMinusOne",
+     "[particles]\npoisson_ratio = -1",
+     {"particles.poisson_ratio = -1.0", "(-1.0, 0.5)"}},
+    {"ZeroWidth", "[container]\nwidth = 0", {"container.width = 0.0", "> 0"}},
+    {"NegativeHeight", "[container]\nheight = -0.06", {"container.height = -0.06", "> 0"}},
+    {"NegativeFrequency", "[drive]\nfrequency = -10", {"drive.frequency = -10.0", ">= 0"}},
+    {"NegativeGamma", "[drive]\ngamma = -1", {"drive.gamma = -1.0", ">= 0"}},
+    {"NegativeAmplitude", "[drive]\namplitude = -0.001", {"drive.amplitude = -0.001", ">= 0"}},
+    {"RestitutionAboveOne", "[contact]\ne = 1.1", {"contact.e = 1.1", "[0.0, 1.0]"}},
+    {"RestitutionBelowZero", "[contact]\ne = -0.1", {"contact.e = -0.1", "[0.0, 1.0]"}},
+    {"NegativeKappa", "[contact]\nkappa = -0.1", {"contact.kappa = -0.1", ">= 0"}},
+    {"EInfZero", "[contact]\ne_inf = 0", {"contact.e_inf = 0.0", "(0.0, 1.0]"}},
+    {"EInfAboveOne", "[contact]\ne_inf = 1.01", {"contact.e_inf = 1.01", "(0.0, 1.0]"}},
+    {"NegativeStokesCritical",
+     "[contact]\nstokes_critical = -40",
+     {"contact.stokes_critical = -40.0", ">= 0"}},
+    {"ZeroViscosity", "[contact]\nviscosity = 0", {"contact.viscosity = 0.0", "> 0"}},
+    {"NegativeFriction", "[contact]\nfriction = -0.5", {"contact.friction = -0.5", ">= 0"}},
+    {"TangentialLimitAboveOne",
+     "[contact]\ntangential_limit = 1.5",
+     {"contact.tangential_limit = 1.5", "[-1.0, 1.0]"}},
+    {"TangentialLimitBelowMinusOne",
+     "[contact]\ntangential_limit = -2",
+     {"contact.tangential_limit = -2.0", "[-1.0, 1.0]"}},
+    {"ZeroTcSeconds", "[contact]\ntc = 0", {"contact.tc = 0.0", "seconds > 0"}},
+    {"NegativeTcSeconds", "[contact]\ntc = -1e-6", {"contact.tc = -1e-06", "seconds > 0"}},
+    {"NegativeRestVelocity",
+     "[contact]\nrest_velocity = -1e-6",
+     {"contact.rest_velocity = -1e-06", ">= 0"}},
+    {"NegativeTemperature",
+     "[initial]\ntemperature = -1e-7",
+     {"initial.temperature = -1e-07", ">= 0"}},
+    {"ZeroDuration", "[run]\nduration = 0", {"run.duration = 0.0", "> 0"}},
+    {"ZeroPhasesPerCycle", "[run]\nphases_per_cycle = 0", {"run.phases_per_cycle = 0", ">= 1"}},
+    {"NegativeRecordInterval",
+     "[run]\nrecord_interval = -0.1",
+     {"run.record_interval = -0.1", ">= 0"}},
+    {"ZeroTrajectoryStride", "[run]\ntrajectory_stride = 0", {"run.trajectory_stride = 0", ">= 1"}},
+    {"NegativeGravity", "[run]\ngravity = -9.81", {"run.gravity = -9.81", ">= 0"}},
+    {"TooFewHydroCells", "[hydro]\ncells = 7", {"hydro.cells = 7", ">= 8"}},
+    {"ZeroRtol", "[hydro]\nrtol = 0", {"hydro.rtol = 0.0", "> 0"}},
+    {"NegativeAtol", "[hydro]\natol = -1e-9", {"hydro.atol = -1e-09", "> 0"}},
+    {"WidthBelowOneDiameter",
+     "[container]\nwidth = 0.001\n[particles]\ncount = 1",
+     {"container.width = 0.001", "smaller than one particle diameter"}},
+    {"HeightBelowOneDiameter",
+     "[container]\nheight = 0.0015\n[particles]\ncount = 1",
+     {"container.height = 0.0015", "smaller than one particle diameter"}},
+    {"PeriodicWidthBelowTwoDiameters",
+     "[container]\nwidth = 0.003\nperiodic_x = true\n[particles]\ncount = 1",
+     {"container.width = 0.003", "at least 2 particle diameters"}},
+    {"PeriodicZWithDrive",
+     "[container]\nperiodic_z = true",
+     {"container.periodic_z = true", "drive.frequency = 0"}},
+    {"GammaTooLargeForTheContainer",
+     "[drive]\ngamma = 40",
+     {"drive.gamma = 40.0", "impossible geometry", "container.height - particles.diameter"}},
+    {"AmplitudeTooLargeForTheContainer",
+     "[drive]\namplitude = 0.029",
+     {"drive.amplitude = 0.029", "impossible geometry"}},
+    {"GammaWithoutGravity",
+     "[run]\ngravity = 0",
+     {"drive.gamma = 4.0 (default)", "give drive.amplitude"}},
+    {"MoreParticlesThanFit",
+     "[particles]\ncount = 2000",
+     {"particles.count = 2000", "more particles than fit", "hexagonal close packing",
+      "at most 1039"}},
+    {"DefaultValueInvalidatedByAnotherKey",
+     "[particles]\ndiameter = 0.1",
+     {"scene.toml: container.width = 0.06 (default)", "smaller than one particle diameter"}},
+};
+
+INSTANTIATE_TEST_SUITE_P(Scene, SceneInvalid, ::testing::ValuesIn(kInvalid),
+                         [](const auto& info) { return std::string(info.param.name); });
+
+TEST(SceneValidation, OverriddenValueIsReportedAsComingFromSet) {
+  try {
+    parseSceneString("[contact]\ne = 0.9\n", {"contact.e=1.5"}, "scene.toml");
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("scene.toml (--set): contact.e = 1.5"));
+  }
+}
+
+TEST(SceneValidation, SceneBuiltInCodeIsCheckedWithTheSameRules) {
+  Scene s;
+  EXPECT_NO_THROW(validateScene(s));
+  s.contact.friction = -1;
+  try {
+    validateScene(s, "sweep point 3");
+    FAIL() << "expected a SceneError";
+  } catch (const SceneError& e) {
+    EXPECT_STREQ(e.what(),
+                 "sweep point 3: contact.friction = -1.0: must be >= 0 (0 = no rotation)");
+  }
+}
+
+TEST(SceneValidation, PackingJustBelowTheHexagonalLimitIsAccepted) {
+  // 0.9069 * 0.06^2 / (pi 0.002^2 / 4) = 1039.2 particles.
+  EXPECT_NO_THROW(parseSceneString("[particles]\ncount = 1039\n"));
+}
+
+}  // namespace
+}  // namespace granwave
