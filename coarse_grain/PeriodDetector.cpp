@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <complex>
+#include <numeric>
 #include <stdexcept>
 #include <string>
 
@@ -61,11 +62,10 @@ PeriodResult detectPeriod(const std::vector<double>& height, int discard_cycles,
     }
     r.strength[p] = std::sqrt(sub / harm);
   }
+  // A period-4 orbit also has power at f/2: the period is the least common multiple of
+  // every subharmonic period present.
   for (int p = 2; p <= opt.max_period; ++p) {
-    if (r.strength[p] > opt.threshold) {
-      r.period = p;
-      break;
-    }
+    if (r.strength[p] > opt.threshold) r.period = std::lcm(r.period, p);
   }
   return r;
 }

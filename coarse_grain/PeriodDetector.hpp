@@ -6,8 +6,9 @@
 // period-p motion adds the subharmonics j K / p (j not a multiple of p). K is trimmed to a
 // multiple of 12 so the subharmonics of periods 2, 3 and 4 fall on exact bins. The strength
 // of period p is the amplitude ratio sqrt(P_sub(p) / P_harm), P_sub(p) the power at the
-// subharmonics of p that are not harmonics of a smaller detected period. The layer has the
-// smallest period p in {2, 3, 4} whose ratio exceeds `threshold`, else period 1.
+// subharmonics of p that are not subharmonics of a smaller period. The layer's period is
+// the least common multiple of every p in {2, ..., max_period} whose ratio exceeds
+// `threshold` (1 if none does).
 #include <vector>
 
 namespace granwave {

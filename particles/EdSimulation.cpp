@@ -130,10 +130,14 @@ double EdSimulation::particleEnergy(const ParticleState& s) const {
 bool EdSimulation::wallPushes(WallId wall, double t) const {
   // A wall holds a resting particle while its acceleration, relative to free fall, points
   // into the container: bottom while z_b'' > -g, lid while z_b'' < -g.
-  const double a = cfg_.plate.acceleration(t);
-  if (wall == kBottom) return a > -cfg_.gravity;
-  if (wall == kLid) return a < -cfg_.gravity;
-  return false;
+  // At the switching instant itself (a = -g up to round-off, e.g. at a take-off event) the
+  // sign of the jerk says which side the next instant is on.
+  if (wall != kBottom && wall != kLid) return false;
+  const double excess = cfg_.plate.acceleration(t) + cfg_.gravity;  // > 0: bottom pushes
+  const double scale = cfg_.gravity + cfg_.plate.maxAcceleration();
+  double side = excess;
+  if (std::abs(excess) <= 1e-9 * scale) side = cfg_.plate.jerk(t);
+  return wall == kBottom ? side > 0.0 : side < 0.0;
 }
 
 Vec2 EdSimulation::position(int i) const {

@@ -86,8 +86,8 @@ class EdSimulation {
   void doCross(int i, CrossDirection dir);
   void doTakeOff(int i);
   void startRiding(int i, WallId wall);
-  // Approach speed below which a rider/flyer pair is at round-off level (see PairCollisionTime).
-  double riderApproachTolerance(double dvx, double dvz) const;
+  // Approach speed below which a pair's approach is round-off (see PairCollisionTime).
+  double approachTolerance(const ParticleState& a, const ParticleState& b) const;
   bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
   void noteCollision(int i, int partner);

@@ -81,8 +81,9 @@ void EdSimulation::noteCollision(int i, int partner) {
   }
 }
 
-double EdSimulation::riderApproachTolerance(double dvx, double dvz) const {
-  return kApproachTolerance * (std::hypot(dvx, dvz) + std::sqrt(cfg_.gravity * cfg_.diameter));
+double EdSimulation::approachTolerance(const ParticleState& a, const ParticleState& b) const {
+  return kApproachTolerance * (std::hypot(a.vx, a.vz) + std::hypot(b.vx, b.vz) +
+                               std::sqrt(cfg_.gravity * cfg_.diameter));
 }
 
 bool EdSimulation::riderPresses(const ParticleState& rider, const ParticleState& other,
@@ -129,10 +130,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
   const bool pressed = (a_rides && riderPresses(a, b, {-n.x, -n.z})) ||
                        (b_rides && riderPresses(b, a, n));
-  const double vrel = std::hypot(va.x - vb.x, va.z - vb.z);
-  const double tol = a.motion == b.motion || (a_rides && b_rides)
-                         ? kApproachTolerance * vrel
-                         : riderApproachTolerance(va.x - vb.x, va.z - vb.z);
+  const double tol = approachTolerance(a, b);
   if (!(vn > tol)) {
     if (pressed && -vn <= cfg_.rest_velocity) {
       ++a.counter;

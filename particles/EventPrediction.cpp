@@ -160,7 +160,11 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
                                                    o.motion != Motion::Ballistic);
       if (linear) {
         // Same acceleration for both: the relative motion is a straight line.
-        const double tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d);
+        double tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d);
+        // Touching "at once": only if the approach is more than round-off (rare; the
+        // tolerance costs two square roots, so it is computed only here).
+        if (tau == 0.0)
+          tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d, approachTolerance(s, o));
         if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, p_[j].counter};
         continue;
       }
@@ -187,7 +191,7 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
         const double dist = std::hypot(dx, dz);
         return GapRate{dist - d, (dx * (a.vx - b.vx) + dz * (a.vz - b.vz)) / dist};
       };
-      const double rate_tol = riderApproachTolerance(s.vx - o.vx, s.vz - o.vz);
+      const double rate_tol = approachTolerance(s, o);
       const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, rate_tol});
       if (t < best.time) best = {t, EventKind::Pair, j, p_[j].counter};
     }

@@ -4,25 +4,25 @@
 // Gravity is the same for all particles, so pair relative motion is a straight line even
 // under gravity. Cancellation-free root 2c / (-b + sqrt(b^2 - ac)) as in DynamO's
 // ray-sphere kernel; a slightly overlapping but approaching pair collides at once (tau = 0);
-// a receding pair never collides. A touching pair whose approach is at round-off level
-// (relative to |v|; e.g. right after an e_n = 0 collision) is not approaching: colliding it
-// "at once" would change nothing and repeat forever.
+// a receding pair never collides. A touching pair whose approach speed is below
+// `approach_tol` (round-off, e.g. right after an e_n = 0 collision) is not approaching:
+// colliding it "at once" would change nothing and repeat forever.
+// Round-off in a velocity difference scales with the velocities themselves, so callers
+// pass kApproachTolerance times the particles' speeds.
 inline constexpr double kApproachTolerance = 1e-9;
 #include <cmath>
 #include <limits>
 
 namespace granwave {
 
-inline double pairCollisionTime(double rx, double rz, double vx, double vz, double diameter) {
+inline double pairCollisionTime(double rx, double rz, double vx, double vz, double diameter,
+                                double approach_tol = 0.0) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
   const double b = rx * vx + rz * vz;
   if (b >= 0.0) return kNever;
   const double c = rx * rx + rz * rz - diameter * diameter;
   const double a = vx * vx + vz * vz;
-  if (c <= 0.0) {
-    return b * b > kApproachTolerance * kApproachTolerance * a * diameter * diameter ? 0.0
-                                                                                    : kNever;
-  }
+  if (c <= 0.0) return -b > approach_tol * diameter ? 0.0 : kNever;
   const double disc = b * b - a * c;
   if (disc < 0.0) return kNever;
   return c / (-b + std::sqrt(disc));

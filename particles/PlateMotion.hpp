@@ -12,6 +12,7 @@ struct PlateMotion {
   double height(double t) const { return amplitude * std::sin(omega * t); }
   double velocity(double t) const { return amplitude * omega * std::cos(omega * t); }
   double acceleration(double t) const { return -amplitude * omega * omega * std::sin(omega * t); }
+  double jerk(double t) const { return -amplitude * omega * omega * omega * std::cos(omega * t); }
   double maxAcceleration() const { return amplitude * omega * omega; }
 };
 

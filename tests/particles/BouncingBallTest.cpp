@@ -3,12 +3,14 @@
 // below -g (sin(w t) = 1/Gamma), flies freely, lands with zero rebound and rests again.
 // Period 1 below Gamma = sqrt(pi^2 + 4) = 3.7242, period 2 from there to 6.5938.
 //
-// The expected take-off and landing phases are computed here by an independent map
-// (dense scan plus bisection, no code shared with the engine) and compared with the
-// engine's trajectory recorded at 1000 phases per cycle: agreement to 2/1000 of a cycle.
+// The expected landing phases are computed here by an independent map (dense scan plus
+// bisection, no code shared with the engine) and compared with the engine's wall impacts,
+// located to one record (1/1000 of a cycle). The container is made tall (0.5 m) so the
+// ball never reaches the lid, as the map assumes.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -60,10 +62,14 @@ std::vector<double> mapLandingPhases(double gamma, int cycles) {
 }
 
 struct Trajectory : SnapshotObserver {
-  std::vector<double> gap, height;
+  std::vector<double> height;
+  std::vector<double> impact_phases;  // record interval in which the wall count rose
+  std::uint64_t walls = 0;
   void observe(const Snapshot& s) override {
-    gap.push_back(s.z[0] - 0.001 - s.plate_height);
     height.push_back(s.z[0]);
+    if (s.obs.collisions.wall != walls && s.step > 0)
+      impact_phases.push_back(std::fmod((static_cast<double>(s.step) - 0.5) / kM, 1.0));
+    walls = s.obs.collisions.wall;
   }
 };
 
@@ -75,6 +81,7 @@ struct BallRun {
 BallRun runBall(double gamma, double duration) {
   Scene s;
   s.particles.count = 1;
+  s.container.height = 0.5;
   s.drive.gamma = gamma;
   s.contact.restitution = RestitutionKind::Constant;
   s.contact.e = 0.0;
@@ -93,11 +100,7 @@ BallRun runBall(double gamma, double duration) {
   sim.addObserver(&tr);
   sim.run();
   BallRun r;
-  const double tol = 1e-12;
-  for (std::size_t k = 1; k < tr.gap.size(); ++k) {
-    if (tr.gap[k - 1] > tol && tr.gap[k] <= tol)
-      r.landing_phases.push_back(std::fmod(static_cast<double>(k) / kM, 1.0));
-  }
+  r.landing_phases = tr.impact_phases;
   r.period = detectPeriod(tr.height, 6, {kM}).period;
   return r;
 }
@@ -115,13 +118,13 @@ TEST_P(BouncingBall, FollowsTheCompletelyInelasticBouncingBallMap) {
   const BallRun run = runBall(gamma, 4.0);  // 40 cycles
   EXPECT_EQ(run.period, expected_period) << "Gamma = " << gamma;
   const std::vector<double> map = mapLandingPhases(gamma, 60);
-  ASSERT_GE(run.landing_phases.size(), 8u);
+  ASSERT_GE(run.landing_phases.size(), 6u);
   // The last landings of the engine must each match one of the map's steady landings.
   for (std::size_t k = run.landing_phases.size() - 4; k < run.landing_phases.size(); ++k) {
     double best = 1.0;
     for (std::size_t j = map.size() - 4; j < map.size(); ++j)
       best = std::min(best, phaseDistance(run.landing_phases[k], map[j]));
-    EXPECT_LT(best, 2.0 / kM) << "Gamma = " << gamma << ", landing " << k;
+    EXPECT_LT(best, 1.0 / kM) << "Gamma = " << gamma << ", landing " << k;
   }
 }
 
@@ -132,3 +135,6 @@ INSTANTIATE_TEST_SUITE_P(PeriodTwoUpTo6p59, BouncingBall,
                          ::testing::Values(std::pair{3.9, 2}, std::pair{4.0, 2},
                                            std::pair{5.0, 2}, std::pair{6.0, 2},
                                            std::pair{6.5, 2}));
+// Beyond the second doubling (6.5938) the orbit has period 4.
+INSTANTIATE_TEST_SUITE_P(PeriodFourBeyond6p59, BouncingBall,
+                         ::testing::Values(std::pair{6.65, 4}));

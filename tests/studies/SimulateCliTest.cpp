@@ -75,7 +75,7 @@ TEST_F(SimulateCli, WritesRunFileAndSummary) {
   granwave::H5mdReader reader((dir_ / "run.h5").string());
   EXPECT_TRUE(reader.completed());
   EXPECT_EQ(reader.particleCount(), 300);
-  EXPECT_EQ(reader.frameCount(), 31u);  // t = 0, 0.01, ..., 0.30 at M = 100, f = 10 Hz
+  EXPECT_EQ(reader.frameCount(), 301u);  // t = 0, 1 ms, ..., 0.3 s: M = 100 at f = 10 Hz
   EXPECT_EQ(stray("run.h5"), 0);
 }
 
@@ -121,7 +121,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"Malformed", "[drive\nfrequency = 4\n", "bad.toml"},
         BadScene{"WrongType", "[particles]\ncount = \"many\"\n", "particles.count"},
         BadScene{"NonPositiveSize", "[particles]\ndiameter = -0.002\n", "particles.diameter"},
-        BadScene{"TooManyParticles", "[particles]\ncount = 1000\n", "particles.count"},
+        BadScene{"TooManyParticles", "[particles]\ncount = 1200\n", "particles.count"},
         BadScene{"AmplitudeTooLarge", "[drive]\namplitude = 0.04\ngamma = 4\n", "drive"},
         BadScene{"ImpossibleAmplitude", "[drive]\ngamma = 100\n", "amplitude"},
         BadScene{"BadLaw", "[contact]\nrestitution = \"sticky\"\n", "contact.restitution"},
