@@ -38,7 +38,11 @@ File File::create(const std::string& path, const std::string& display_name) {
   silenceHdf5Errors();
   const std::string name = display_name.empty() ? path : display_name;
   Handle fapl = strongCloseAccess(name);
-  hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl.get());
+  // No object timestamps anywhere (here: the root group), so that the same run gives the
+  // same bytes (reproducibility contract).
+  Handle fcpl = propertyListHandle(check(H5Pcreate(H5P_FILE_CREATE), name, "cannot create"));
+  H5Pset_obj_track_times(fcpl.get(), false);
+  hid_t id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.get(), fapl.get());
   return File(fileHandle(check(id, name, "cannot create file")), name);
 }
 
@@ -68,7 +72,9 @@ void File::close() {
 void File::createGroup(const std::string& path) {
   if (isGroup(path)) return;
   Handle lcpl = intermediateGroupCreation();
-  hid_t id = H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), H5P_DEFAULT, H5P_DEFAULT);
+  Handle gcpl = propertyListHandle(H5Pcreate(H5P_GROUP_CREATE));
+  H5Pset_obj_track_times(gcpl.get(), false);  // same bytes for the same run
+  hid_t id = H5Gcreate2(file_.get(), path.c_str(), lcpl.get(), gcpl.get(), H5P_DEFAULT);
   if (id < 0) fail("cannot create group " + path);
   H5Gclose(id);
 }

@@ -36,8 +36,10 @@ void File::writeDataset(const std::string& path, const std::vector<T>& data, con
   }
   Handle space = makeDataspace(shape, name_);
   Handle lcpl = intermediateGroupCreation();
+  Handle dcpl = propertyListHandle(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_obj_track_times(dcpl.get(), false);  // same bytes for the same run
   hid_t id = H5Dcreate2(file_.get(), path.c_str(), fileType<T>(), space.get(), lcpl.get(),
-                        H5P_DEFAULT, H5P_DEFAULT);
+                        dcpl.get(), H5P_DEFAULT);
   Handle dataset = datasetHandle(check(id, name_, "cannot create dataset " + path));
   if (H5Dwrite(dataset.get(), nativeType<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data()) < 0) {
     fail("cannot write dataset " + path);
@@ -48,7 +50,9 @@ void File::writeStringDataset(const std::string& path, const std::string& text) 
   Handle type = utf8StringType(name_);
   Handle space = makeDataspace({}, name_);
   Handle lcpl = intermediateGroupCreation();
-  hid_t id = H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), lcpl.get(), H5P_DEFAULT,
+  Handle dcpl = propertyListHandle(H5Pcreate(H5P_DATASET_CREATE));
+  H5Pset_obj_track_times(dcpl.get(), false);  // same bytes for the same run
+  hid_t id = H5Dcreate2(file_.get(), path.c_str(), type.get(), space.get(), lcpl.get(), dcpl.get(),
                         H5P_DEFAULT);
   Handle dataset = datasetHandle(check(id, name_, "cannot create dataset " + path));
   const char* data = text.c_str();
@@ -66,6 +70,7 @@ ExtendibleDataset<T> File::createExtendible(const std::string& path, const Shape
   chunk.insert(chunk.end(), row_shape.begin(), row_shape.end());
   Handle space = makeDataspace(shape, max_shape, name_);
   Handle dcpl = propertyListHandle(check(H5Pcreate(H5P_DATASET_CREATE), name_, "no plist"));
+  H5Pset_obj_track_times(dcpl.get(), false);  // same bytes for the same run
   const std::vector<hsize_t> chunk_dims(chunk.begin(), chunk.end());
   if (H5Pset_chunk(dcpl.get(), static_cast<int>(chunk_dims.size()), chunk_dims.data()) < 0) {
     fail("cannot set chunk " + shapeString(chunk) + " for " + path);

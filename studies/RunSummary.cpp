@@ -33,7 +33,7 @@ bool summarisePeriod(const RunSummaryInput& in, PeriodResult& out, int& discarde
   return true;
 }
 
-std::string formatRunSummary(const RunSummaryInput& in) {
+std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
   const Scene& s = *in.scene;
   const SceneDerived dv = derive(s);
   const Observables& o = in.final_obs;
@@ -53,10 +53,14 @@ std::string formatRunSummary(const RunSummaryInput& in) {
   r += fmt::format("TC model        {}\n",
                    in.tc > 0 ? fmt::format("t_c = {:.3g} s", in.tc) : std::string("off"));
   r += fmt::format("simulated       {:.4g} s{}\n", in.simulated, in.completed ? "" : " (interrupted)");
-  r += fmt::format("wall time       {:.3f} s  ({:.3g} simulated s per wall s)\n", in.wall,
-                   in.simulated / std::max(in.wall, 1e-9));
-  r += fmt::format("events          {}  ({:.3g} per wall s)\n", o.events,
-                   o.events / std::max(in.wall, 1e-9));
+  if (include_timing) {
+    r += fmt::format("wall time       {:.3f} s  ({:.3g} simulated s per wall s)\n", in.wall,
+                     in.simulated / std::max(in.wall, 1e-9));
+    r += fmt::format("events          {}  ({:.3g} per wall s)\n", o.events,
+                     o.events / std::max(in.wall, 1e-9));
+  } else {
+    r += fmt::format("events          {}\n", o.events);
+  }
   r += fmt::format("collisions      pair {}, wall {}, made elastic by TC {}, came to rest {}\n",
                    o.collisions.pair, o.collisions.wall, o.collisions.tc_elastic,
                    o.collisions.rests);

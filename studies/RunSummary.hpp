@@ -25,6 +25,8 @@ struct RunSummaryInput {
 // Period of the centre-of-mass motion, if the run is driven and long enough (12 cycles
 // after the discarded transient: the first fifth of the run, at least 3 cycles).
 bool summarisePeriod(const RunSummaryInput& in, PeriodResult& out, int& discarded);
-std::string formatRunSummary(const RunSummaryInput& in);
+// With include_timing = false the wall-clock lines are left out: that version is stored in
+// the run file, which must be bit-identical for the same scene and seed.
+std::string formatRunSummary(const RunSummaryInput& in, bool include_timing = true);
 
 }  // namespace granwave

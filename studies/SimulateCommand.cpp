@@ -93,10 +93,11 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   const std::string summary = formatRunSummary(in);
 
   if (writer) {
+    const std::string stored = formatRunSummary(in, false);
     if (status.completed) {
-      writer->finish(true, summary);
+      writer->finish(true, stored);
     } else {
-      writer->finish(false, summary, out + ".interrupted");
+      writer->finish(false, stored, out + ".interrupted");
     }
   }
   fmt::print("{}", summary);
