@@ -26,7 +26,7 @@ PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, 
   const double vrn = vr.x * n.x + vr.z * n.z;  // < 0 when approaching
   const Vec2 vn{vrn * n.x, vrn * n.z};
   const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
-  const double vt_abs = std::hypot(vt.x, vt.z);
+  const double vt_abs = std::sqrt(vt.x * vt.x + vt.z * vt.z);
 
   PairCollisionResult r;
   r.vn = -vrn;
@@ -58,7 +58,7 @@ WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double ma
   const double vrn = vr.x * n.x + vr.z * n.z;
   const Vec2 vn{vrn * n.x, vrn * n.z};
   const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
-  const double vt_abs = std::hypot(vt.x, vt.z);
+  const double vt_abs = std::sqrt(vt.x * vt.x + vt.z * vt.z);
 
   WallCollisionResult r;
   r.vn = -vrn;

@@ -87,7 +87,7 @@ class EdSimulation {
   void doTakeOff(int i);
   void startRiding(int i, WallId wall);
   // Approach speed below which a pair's approach is round-off (see PairCollisionTime).
-  double approachTolerance(const ParticleState& a, const ParticleState& b) const;
+  double approachTolerance(double speed_a, double speed_b) const;
   bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
   void noteCollision(int i, int partner);

@@ -81,9 +81,8 @@ void EdSimulation::noteCollision(int i, int partner) {
   }
 }
 
-double EdSimulation::approachTolerance(const ParticleState& a, const ParticleState& b) const {
-  return kApproachTolerance * (std::hypot(a.vx, a.vz) + std::hypot(b.vx, b.vz) +
-                               std::sqrt(cfg_.gravity * cfg_.diameter));
+double EdSimulation::approachTolerance(double speed_a, double speed_b) const {
+  return kApproachTolerance * (speed_a + speed_b + std::sqrt(cfg_.gravity * cfg_.diameter));
 }
 
 bool EdSimulation::riderPresses(const ParticleState& rider, const ParticleState& other,
@@ -122,7 +121,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   ParticleState& a = p_[i];
   ParticleState& b = p_[j];
   const double rx = a.x - b.x - shift.x, rz = a.z - b.z - shift.z;
-  const double dist = std::hypot(rx, rz);
+  const double dist = std::sqrt(rx * rx + rz * rz);
   const Vec2 n{rx / dist, rz / dist};
   const Vec2 va{a.vx, a.vz}, vb{b.vx, b.vz};
   const double vn = pairNormalSpeed(n, va, vb);
@@ -130,7 +129,8 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
   const bool pressed = (a_rides && riderPresses(a, b, {-n.x, -n.z})) ||
                        (b_rides && riderPresses(b, a, n));
-  const double tol = approachTolerance(a, b);
+  const double tol = approachTolerance(std::sqrt(a.vx * a.vx + a.vz * a.vz),
+                                       std::sqrt(b.vx * b.vx + b.vz * b.vz));
   if (!(vn > tol)) {
     if (pressed && -vn <= cfg_.rest_velocity) {
       ++a.counter;

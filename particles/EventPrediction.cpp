@@ -68,7 +68,7 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
   }
   // Riding: the height is the wall's, z(t) = z_b(t) + const; its curvature is bounded by
   // A omega^2, so the gap root finder gives the exact crossing.
-  const double offset = s.z - cfg_.plate.height(now_);
+  const double offset = s.ride_offset;
   const PlateMotion& plate = cfg_.plate;
   if (up_open) {
     const double zhi = zlo + g.wz;
@@ -114,6 +114,7 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
 
   const double t0 = now_;
   const double tol = 1e-10 * cfg_.diameter;
+  const double zb0 = plate.height(t0), vb0 = plate.velocity(t0);
   // Bottom: h = z(t) - d/2 - z_b(t), h'' = -g - z_b'' >= -(g + A w^2).
   {
     auto gap = [&](double t) {
@@ -121,11 +122,11 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
       return GapRate{s.z + (s.vz - 0.5 * g * tau) * tau - r - plate.height(t),
                      s.vz - g * tau - plate.velocity(t)};
     };
-    const GapRate h0 = gap(t0);
+    const GapRate h0{s.z - r - zb0, s.vz - vb0};
     if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kBottom, t0)) {
       consider(best, t0, EventKind::Wall, kBottom);  // resting contact: starts riding
     } else {
-      consider(best, firstClosingRoot(gap, bottom_curvature_, t0, best.time, {tol}),
+      consider(best, firstClosingRoot(gap, bottom_curvature_, t0, best.time, {tol}, h0),
                EventKind::Wall, kBottom);
     }
   }
@@ -136,64 +137,84 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
       return GapRate{plate.height(t) + cfg_.height - r - s.z - (s.vz - 0.5 * g * tau) * tau,
                      plate.velocity(t) - s.vz + g * tau};
     };
-    const GapRate h0 = gap(t0);
+    const GapRate h0{zb0 + cfg_.height - r - s.z, vb0 - s.vz};
     if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kLid, t0)) {
       consider(best, t0, EventKind::Wall, kLid);
     } else {
-      consider(best, firstClosingRoot(gap, lid_curvature_, t0, best.time, {tol}), EventKind::Wall,
-               kLid);
+      consider(best, firstClosingRoot(gap, lid_curvature_, t0, best.time, {tol}, h0),
+               EventKind::Wall, kLid);
     }
   }
 }
 
 void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) const {
-  const double d = cfg_.diameter;
+  const double d = cfg_.diameter, g = cfg_.gravity;
+  // The plate's state now, once: riders' positions follow from it without sin/cos.
+  const double zb_now = cfg_.plate.height(now_), vb_now = cfg_.plate.velocity(now_);
+  const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(i), nb);
   for (int c = 0; c < m; ++c) {
     for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
       if (j == i) continue;
-      const ParticleState o = extrapolated(j, now_);
-      const double rx = s.x - o.x - nb[c].shift_x;
-      const double rz = s.z - o.z - nb[c].shift_z;
-      const bool linear = s.motion == o.motion || (s.motion != Motion::Ballistic &&
-                                                   o.motion != Motion::Ballistic);
+      const ParticleState& q = p_[j];
+      const double dt = now_ - q.t;
+      double oz, ovz;
+      if (q.motion == Motion::Ballistic) {
+        oz = q.z + (q.vz - 0.5 * g * dt) * dt;
+        ovz = q.vz - g * dt;
+      } else {
+        oz = zb_now + q.ride_offset;
+        ovz = vb_now;
+      }
+      const double rx = s.x - (q.x + q.vx * dt) - nb[c].shift_x;
+      const double rz = s.z - oz - nb[c].shift_z;
+      const double vx = s.vx - q.vx, vz = s.vz - ovz;
+      const bool linear = s.motion == q.motion || (s.motion != Motion::Ballistic &&
+                                                   q.motion != Motion::Ballistic);
       if (linear) {
         // Same acceleration for both: the relative motion is a straight line.
-        double tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d);
-        // Touching "at once": only if the approach is more than round-off (rare; the
-        // tolerance costs two square roots, so it is computed only here).
-        if (tau == 0.0)
-          tau = pairCollisionTime(rx, rz, s.vx - o.vx, s.vz - o.vz, d, approachTolerance(s, o));
-        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, p_[j].counter};
+        double tau = pairCollisionTime(rx, rz, vx, vz, d);
+        // Touching "at once": only if the approach is more than round-off (rare, so the
+        // tolerance, which costs square roots, is computed only here).
+        if (tau == 0.0) {
+          const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
+          tau = pairCollisionTime(rx, rz, vx, vz, d, tol);
+        }
+        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
         continue;
+      }
+      const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
+      const double r2 = rx * rx + rz * rz;
+      if (r2 <= d * d * (1.0 + 2e-10)) {
+        // Touching a rider with no relative normal motion while pressed: rests on it now.
+        const double dist = std::sqrt(r2);
+        const double rate = (rx * vx + rz * vz) / dist;
+        ParticleState o = q;
+        o.z = oz;
+        const Vec2 n{rx / dist, rz / dist};  // from j to i
+        const bool presses = s.motion == Motion::Ballistic ? riderPresses(o, s, n)
+                                                           : riderPresses(s, o, {-n.x, -n.z});
+        if (std::abs(rate) <= cfg_.rest_velocity && presses) {
+          if (now_ < best.time) best = {now_, EventKind::Pair, j, q.counter};
+          continue;
+        }
       }
       // One rides a wall, the other flies: the relative acceleration is bounded by
       // g + A w^2, and so is the curvature of the distance |r| - d (its other term is >= 0).
       // Search only until either partner's next event: both re-predict then.
       const double horizon = std::min(best.time, queue_.time(j));
+      if (horizon <= now_) continue;
       const double sx = nb[c].shift_x, sz = nb[c].shift_z;
-      {
-        const double dist = std::hypot(rx, rz);
-        const double rate = (rx * (s.vx - o.vx) + rz * (s.vz - o.vz)) / dist;
-        const Vec2 n{rx / dist, rz / dist};  // from j to i
-        const bool presses = s.motion == Motion::Ballistic ? riderPresses(o, s, n)
-                                                           : riderPresses(s, o, {-n.x, -n.z});
-        if (dist - d <= 1e-10 * d && std::abs(rate) <= cfg_.rest_velocity && presses) {
-          if (now_ < best.time) best = {now_, EventKind::Pair, j, p_[j].counter};
-          continue;
-        }
-      }
       auto gap = [&](double t) {
         const ParticleState a = extrapolated(i, t);
         const ParticleState b = extrapolated(j, t);
         const double dx = a.x - b.x - sx, dz = a.z - b.z - sz;
-        const double dist = std::hypot(dx, dz);
+        const double dist = std::sqrt(dx * dx + dz * dz);
         return GapRate{dist - d, (dx * (a.vx - b.vx) + dz * (a.vz - b.vz)) / dist};
       };
-      const double rate_tol = approachTolerance(s, o);
-      const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, rate_tol});
-      if (t < best.time) best = {t, EventKind::Pair, j, p_[j].counter};
+      const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, tol});
+      if (t < best.time) best = {t, EventKind::Pair, j, q.counter};
     }
   }
 }

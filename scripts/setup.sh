@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages granwave needs (only those missing), configures and
+# builds. Used by main.sh and test.sh; safe to run again (incremental).
+#   GRANWAVE_BUILD_DIR  build tree (default: build)
+#   GRANWAVE_SANITIZE   1 = address + undefined-behaviour sanitizer build
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(build-essential cmake pkg-config
+          libeigen3-dev libsundials-dev libfftw3-dev libhdf5-dev hdf5-tools
+          libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev libfmt-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  echo "granwave setup: installing ${missing[*]}" >&2
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >&2
+fi
+
+build="${GRANWAVE_BUILD_DIR:-build}"
+sanitize="${GRANWAVE_SANITIZE:-0}"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
+  -DGRANWAVE_SANITIZE="$([ "$sanitize" = 1 ] && echo ON || echo OFF)" \
+  -DGRANWAVE_BUILD_BENCH="$([ "$sanitize" = 1 ] && echo OFF || echo ON)" >&2
+cmake --build "$build" -j"$(nproc)" >&2

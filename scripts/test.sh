@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# Set up, build and run the whole test suite through ctest (unit, integration and
+# validation tiers). With --sanitize: an address + undefined-behaviour sanitizer build in
+# build-asan, running the same tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if [ "${1:-}" = "--sanitize" ]; then
+  export GRANWAVE_BUILD_DIR="${GRANWAVE_BUILD_DIR:-build-asan}" GRANWAVE_SANITIZE=1
+fi
+bash scripts/setup.sh
+build="${GRANWAVE_BUILD_DIR:-build}"
+ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
