@@ -144,11 +144,11 @@ void Checker::geometry() const {
     if (length < d) {
       fail(key, length, fmt::format("smaller than one particle diameter ({} m)", tomlNumber(d)));
     }
-    if (periodic && length < 2 * d) {
+    if (periodic && length < 3 * d) {
       fail(key, length,
-           fmt::format("a periodic length must be at least 2 particle diameters ({} m) so that "
-                       "each pair has a single nearest image",
-                       tomlNumber(2 * d)));
+           fmt::format("a periodic length must be at least 3 particle diameters ({} m): the "
+                       "engine's 3 x 3 cell stencil needs 3 cells of side >= d",
+                       tomlNumber(3 * d)));
     }
   }
   const double occupied = s_.particles.count * std::numbers::pi * d * d / 4.0;
