@@ -8,10 +8,13 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "coarse_grain/FieldsFile.hpp"
+#include "coarse_grain/PhaseAverager.hpp"
 #include "particles/EdSimulation.hpp"
 #include "particles/H5mdWriter.hpp"
 #include "particles/InitialState.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/FieldsSetup.hpp"
 #include "studies/InterruptFlag.hpp"
 #include "studies/ProgressReporter.hpp"
 #include "studies/RunSummary.hpp"
@@ -45,6 +48,12 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress line on stderr");
   cmd->add_flag("--no-output", opt.no_output, "Do not write a run file (summary only)");
+  cmd->add_option("--fields", opt.fields,
+                  "Also write phase-averaged fields, computed live (HDF5 + .xdmf)");
+  cmd->add_option("--fields-period", opt.fields_period, "Cycles per phase window for --fields")
+      ->check(CLI::Range(1, 4));
+  cmd->add_option("--fields-blocks", opt.fields_blocks, "Blocks of cycles for --fields")
+      ->check(CLI::Range(2, 50));
 }
 
 int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
@@ -67,6 +76,12 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   }
   CenterOfMassSeries com;
   sim.addObserver(&com);
+  std::unique_ptr<PhaseAverager> averager;
+  if (!opt.fields.empty()) {
+    averager = std::make_unique<PhaseAverager>(
+        phaseAveragerConfig(scene, opt.fields_period, opt.fields_blocks, -1));
+    sim.addObserver(averager.get());
+  }
   ProgressReporter progress(scene.run.duration);
   if (!opt.quiet) sim.addObserver(&progress);
 
@@ -107,6 +122,16 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
     return 130;
   }
   if (writer) fmt::print("output          {}\n", out);
+  if (averager) {
+    PeriodResult period;
+    int discarded = 0;
+    const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
+    const FieldsAnalysis a = analyseFields(
+        *averager, fieldsContext(scene, "live: " + opt.scene_path, sceneToToml(scene), layer_period));
+    writeFieldsFile(opt.fields, a);
+    fmt::print("{}", formatFieldsSummary(a));
+    fmt::print("fields output   {} (+ {})\n", opt.fields, xdmfSidecarPath(opt.fields));
+  }
   return 0;
 }
 

@@ -16,6 +16,9 @@ struct SimulateOptions {
   std::vector<std::string> overrides;
   bool quiet = false;  // no progress line
   bool no_output = false;  // run and summarise only
+  std::string fields;      // live phase-averaged fields file (empty = none)
+  int fields_period = 2;   // cycles per phase window
+  int fields_blocks = 5;
 };
 
 void addSimulateCommand(CLI::App& app, SimulateOptions& options);

@@ -6,8 +6,10 @@
 #include <exception>
 #include <string>
 
+#include "h5/H5Error.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/FieldsCommand.hpp"
 #include "studies/SimulateCommand.hpp"
 #include "studies/Version.hpp"
 
@@ -17,12 +19,15 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   granwave::SimulateOptions simulate;
   granwave::addSimulateCommand(app, simulate);
+  granwave::FieldsOptions fields;
+  granwave::addFieldsCommand(app, fields);
   CLI11_PARSE(app, argc, argv);
 
   std::string command_line;
   for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
   try {
     if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
+    if (app.got_subcommand("fields")) return granwave::runFields(fields);
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 2;

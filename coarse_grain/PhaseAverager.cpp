@@ -1,0 +1,58 @@
+#include "coarse_grain/PhaseAverager.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace granwave {
+
+PhaseAverager::PhaseAverager(const PhaseAveragerConfig& c)
+    : cfg_(c),
+      acc_(c.grid, c.samples_per_cycle * c.cycles_per_window, c.blocks),
+      detector_(c.steady) {
+  if (c.samples_per_cycle < 1 || c.cycles_per_window < 1 || c.blocks < 1)
+    throw std::invalid_argument("phase averaging needs M >= 1, P >= 1 and at least one block");
+  if (c.fixed_discard >= 0) {
+    // Align the first pooled cycle with the window so the phase parity is the absolute one.
+    const int P = c.cycles_per_window;
+    start_cycle_ = (c.fixed_discard + P - 1) / P * P;
+    const int usable = std::max(0, c.total_cycles - start_cycle_);
+    cycles_per_block_ = std::max(P, usable / c.blocks / P * P);
+  }
+}
+
+void PhaseAverager::endOfCycle(int cycle) {
+  if (cycle_samples_ == 0) return;
+  const bool steady = detector_.addCycle(cycle_height_sum_ / cycle_samples_);
+  if (start_cycle_ < 0 && steady) {
+    const int P = cfg_.cycles_per_window;
+    start_cycle_ = (cycle + 1 + P - 1) / P * P;  // next window boundary
+    const int usable = std::max(0, cfg_.total_cycles - start_cycle_);
+    cycles_per_block_ = std::max(P, usable / cfg_.blocks / P * P);
+  }
+  cycle_height_sum_ = 0;
+  cycle_samples_ = 0;
+}
+
+void PhaseAverager::observe(const Snapshot& s) {
+  const int M = cfg_.samples_per_cycle;
+  const int cycle = static_cast<int>(s.step / static_cast<std::uint64_t>(M));
+  const int phase = static_cast<int>(s.step % static_cast<std::uint64_t>(M));
+  if (cycle != current_cycle_) {
+    if (current_cycle_ >= 0) endOfCycle(current_cycle_);
+    current_cycle_ = cycle;
+  }
+  double zsum = 0;
+  for (double z : s.z) zsum += z;
+  cycle_height_sum_ += zsum / std::max(1, s.size());
+  ++cycle_samples_;
+
+  if (start_cycle_ < 0 || cycle < start_cycle_ || cycle >= cfg_.total_cycles) return;
+  const int block = std::min(cfg_.blocks - 1, (cycle - start_cycle_) / cycles_per_block_);
+  const int wphase = (cycle % cfg_.cycles_per_window) * M + phase;
+  if (phase == 0) pooled_cycles_ = cycle - start_cycle_ + 1;
+  acc_.countSnapshot(block, wphase, zsum, s.size());
+  for (int k = 0; k < s.size(); ++k)
+    acc_.add(block, wphase, s.x[k], s.z[k], s.vx[k], s.vz[k], s.omega[k]);
+}
+
+}  // namespace granwave

@@ -1,0 +1,23 @@
+#pragma once
+// `granwave fields RUN.h5 [-o FIELDS.h5] [--period auto|P] [--blocks B] [--discard auto|N]`:
+// phase-averaged fields, profiles and wave fronts of a recorded run.
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace granwave {
+
+struct FieldsOptions {
+  std::string run_path;
+  std::string output;  // default: <run>.fields.h5
+  std::string period = "auto";
+  int blocks = 5;
+  std::string discard = "auto";
+};
+
+void addFieldsCommand(CLI::App& app, FieldsOptions& options);
+int runFields(const FieldsOptions& options);
+
+}  // namespace granwave

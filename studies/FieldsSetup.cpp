@@ -1,0 +1,64 @@
+#include "studies/FieldsSetup.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "scene/SceneDerived.hpp"
+
+namespace granwave {
+
+PhaseAveragerConfig phaseAveragerConfig(const Scene& s, int P, int blocks, int fixed_discard) {
+  if (s.drive.frequency <= 0)
+    throw std::invalid_argument("phase-averaged fields need a driven scene (drive.frequency > 0)");
+  const SceneDerived dv = derive(s);
+  PhaseAveragerConfig c;
+  c.grid = FieldGrid::forContainer(s.container.width, s.container.height, dv.amplitude,
+                                   s.particles.diameter);
+  c.samples_per_cycle = s.run.phases_per_cycle;
+  c.cycles_per_window = P;
+  c.blocks = blocks;
+  c.total_cycles = static_cast<int>(std::floor(s.run.duration * s.drive.frequency + 1e-9));
+  c.fixed_discard = fixed_discard;
+  return c;
+}
+
+FieldsContext fieldsContext(const Scene& s, const std::string& source,
+                            const std::string& scene_toml, int layer_period) {
+  const SceneDerived dv = derive(s);
+  FieldsContext c;
+  c.diameter = s.particles.diameter;
+  c.mass = dv.mass;
+  c.inertia = dv.inertia;
+  c.frequency = s.drive.frequency;
+  c.amplitude = dv.amplitude;
+  c.T0 = dv.T0;
+  c.width = s.container.width;
+  c.height = s.container.height;
+  c.layer_period = layer_period;
+  c.source = source;
+  c.scene_toml = scene_toml;
+  return c;
+}
+
+std::string formatFieldsSummary(const FieldsAnalysis& a) {
+  std::string r;
+  r += fmt::format("fields          {} x {} cells of {:.3g} m, {} phases ({} cycles x M = {})\n",
+                   a.grid.nx, a.grid.nz, a.grid.wz, a.pooled.phases, a.cycles_per_window,
+                   a.samples_per_cycle);
+  r += fmt::format("pooled          {} steady cycles in {} blocks, {} transient cycles discarded\n",
+                   a.pooled_cycles, a.blocks, a.discarded_cycles);
+  if (a.fronts.empty()) r += "fronts          none with T~_g/T0 > threshold over 3 or more phases\n";
+  for (const FrontEpisode& e : a.fronts) {
+    r += fmt::format(
+        "front           t/T {:.2f}..{:.2f}: {:.2f} +- {:.2f} m/s (lab), {:.2f} m/s relative to "
+        "the gas ahead; peak T~_g/T0 {:.2f}\n",
+        static_cast<double>(e.first_phase) / a.samples_per_cycle,
+        static_cast<double>(e.last_phase) / a.samples_per_cycle, e.speed, e.speed_error,
+        e.speed_relative, e.peak_temperature);
+  }
+  return r;
+}
+
+}  // namespace granwave

@@ -1,0 +1,17 @@
+#pragma once
+// What `fields` (offline) and `simulate --fields` (live) share: the averager's configuration
+// and the analysis context from a scene, and the printed summary of the fields.
+#include <string>
+
+#include "coarse_grain/FieldsAnalysis.hpp"
+#include "scene/Scene.hpp"
+
+namespace granwave {
+
+PhaseAveragerConfig phaseAveragerConfig(const Scene& scene, int cycles_per_window, int blocks,
+                                        int fixed_discard);
+FieldsContext fieldsContext(const Scene& scene, const std::string& source,
+                            const std::string& scene_toml, int layer_period);
+std::string formatFieldsSummary(const FieldsAnalysis& analysis);
+
+}  // namespace granwave
