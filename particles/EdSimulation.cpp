@@ -201,6 +201,9 @@ void EdSimulation::record() {
 }
 
 void EdSimulation::advanceTo(double t) {
+  if (t < now_)
+    throw std::invalid_argument(
+        fmt::format("advanceTo({:.9g} s) would move the clock back from {:.9g} s", t, now_));
   std::uint64_t stalled = 0;
   double last = now_;
   while (queue_.topTime() <= t) {
@@ -223,6 +226,8 @@ RunStatus EdSimulation::run(const std::atomic<bool>* interrupt) {
   RunStatus st;
   const double end = cfg_.duration;
   const double eps = 1e-12 * std::max(end, cfg_.record_interval);
+  // Records already in the past (after an advanceTo) are skipped, never extrapolated back.
+  while (static_cast<double>(records_) * cfg_.record_interval < now_ - eps) ++records_;
   next_record_ = static_cast<double>(records_) * cfg_.record_interval;
   while (true) {
     const double t_stop = std::min(next_record_, end);

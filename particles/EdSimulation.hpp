@@ -61,7 +61,8 @@ class EdSimulation {
   void addObserver(SnapshotObserver* observer) { observers_.push_back(observer); }
   // Runs to config.duration, recording every record_interval (t = 0 included).
   RunStatus run(const std::atomic<bool>* interrupt = nullptr);
-  // Processes events up to time t (no recording); for tests and benchmarks.
+  // Processes events up to time t >= now() (no recording); for tests and benchmarks.
+  // std::invalid_argument if t < now().
   void advanceTo(double t);
 
   Snapshot snapshot() const;  // extrapolated to now()

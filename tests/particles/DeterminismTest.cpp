@@ -36,3 +36,19 @@ TEST(Determinism, DifferentSeedGivesDifferentState) {
   const Snapshot b = finalState(s);
   EXPECT_FALSE(sameBits(a.x, b.x));
 }
+
+TEST(Determinism, ClockNeverMovesBackwards) {
+  EdSimulation sim = test::makeSimulation(test::paperScene(RestitutionKind::Dry, 0.2));
+  sim.advanceTo(0.1);
+  EXPECT_THROW(sim.advanceTo(0.05), std::invalid_argument);
+  // run() after advanceTo records only from now on.
+  struct Times : SnapshotObserver {
+    std::vector<double> t;
+    void observe(const Snapshot& s) override { t.push_back(s.time); }
+  } times;
+  sim.addObserver(&times);
+  sim.run();
+  ASSERT_FALSE(times.t.empty());
+  EXPECT_GE(times.t.front(), 0.1);
+  EXPECT_DOUBLE_EQ(times.t.back(), 0.2);
+}
