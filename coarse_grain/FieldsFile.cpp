@@ -150,6 +150,8 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
       "m s-1");
   put(f, "/fronts/speed_relative", column([](auto& e) { return e.speed_relative; }), {E}, "m s-1");
   put(f, "/fronts/peak_temperature", column([](auto& e) { return e.peak_temperature; }), {E}, "1");
+  put(f, "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }), {E}, "m");
+  put(f, "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }), {E}, "1");
 
   for (std::size_t ph = 0; ph < P; ++ph) {
     const std::string grp = fmt::format("/xdmf/p{:04d}", ph);

@@ -11,7 +11,8 @@
 //   /fronts/<column> [episode]                     first_phase, last_phase, speed, speed_error,
 //                                                  fit_error, block_spread, blocks_used,
 //                                                  gas_velocity_ahead, speed_relative,
-//                                                  peak_temperature
+//                                                  peak_temperature, start_above_plate,
+//                                                  from_impact (1/0)
 //   /xdmf/pNNN/{area_fraction, temperature [nz][1][nx], velocity [nz][1][nx][3]}
 //   /parameters                                    attributes; scene (TOML text)
 // Units as "unit" attributes. Written atomically; the sidecar FIELDS.xdmf after the file.

@@ -85,7 +85,8 @@ double gasAhead(const PhaseFields& f, int ph, double front, double z0, double dz
 std::vector<FrontEpisode> frontEpisodes(const PhaseFields& pooled,
                                         const std::vector<PhaseFields>& blocks, double z0,
                                         double dz, double T0, double phase_dt,
-                                        const FrontOptions& o) {
+                                        const FrontOptions& o,
+                                        const std::vector<double>& plate_height) {
   std::vector<double> peak;
   const std::vector<double> h = frontHeights(pooled, z0, dz, T0, o, &peak);
   std::vector<std::vector<double>> hb;
@@ -98,6 +99,10 @@ std::vector<FrontEpisode> frontEpisodes(const PhaseFields& pooled,
     FrontEpisode e;
     e.first_phase = run.first;
     e.last_phase = (run.first + run.length - 1) % n;
+    if (!plate_height.empty()) {
+      e.start_above_plate = h[run.first] - plate_height[run.first];
+      e.from_impact = e.start_above_plate <= o.impact_max_rows * dz;
+    }
     double gas_sum = 0;
     int gas_n = 0;
     for (int s = 0; s < run.length; ++s) {

@@ -10,7 +10,9 @@
 // over independent blocks of cycles: sqrt(s_fit^2 + s_blocks^2), s_blocks = std(block
 // slopes)/sqrt(blocks). The speed relative to the gas ahead subtracts the mean vertical
 // velocity of the layer above the front (rows more than one diameter above it, weighted by
-// area fraction), averaged over the episode.
+// area fraction), averaged over the episode. Fronts are waves launched by an impact: an
+// episode counts as one only if it starts within `impact_max_rows` rows of the plate; hot spots
+// elsewhere (the top of the layer during free flight) are kept but flagged.
 #include <vector>
 
 #include "coarse_grain/PhaseFields.hpp"
@@ -22,6 +24,7 @@ struct FrontOptions {
   double layer_min_area_fraction = 0.1;  // rows searched for the peak
   int min_points = 3;         // phases needed for a fit
   double gas_min_area_fraction = 0.05;  // rows counted as gas ahead of the front
+  double impact_max_rows = 4;           // rows (diameters) above the plate
 };
 
 struct FrontEpisode {
@@ -34,6 +37,8 @@ struct FrontEpisode {
   int blocks_used = 0;
   double gas_velocity_ahead = kNaN;  // m/s
   double speed_relative = kNaN;      // speed - gas_velocity_ahead
+  double start_above_plate = kNaN;   // m, first front height minus the plate height
+  bool from_impact = true;           // starts near the plate (see above)
 };
 
 // Front height per phase (NaN where no front), and the peak T~_g/T0 per phase.
@@ -42,9 +47,11 @@ std::vector<double> frontHeights(const PhaseFields& f, double z0, double dz, dou
 
 // Episodes with speeds; `blocks` may be empty (then block_spread is NaN and the error is the
 // fit error alone). `phase_dt` is the time between phases (1/(M f)).
+// `plate_height` [phase] (m) may be empty: every episode then counts as from an impact.
 std::vector<FrontEpisode> frontEpisodes(const PhaseFields& pooled,
                                         const std::vector<PhaseFields>& blocks, double z0,
                                         double dz, double T0, double phase_dt,
-                                        const FrontOptions& o = {});
+                                        const FrontOptions& o = {},
+                                        const std::vector<double>& plate_height = {});
 
 }  // namespace granwave

@@ -49,8 +49,16 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
                    a.samples_per_cycle);
   r += fmt::format("pooled          {} steady cycles in {} blocks, {} transient cycles discarded\n",
                    a.pooled_cycles, a.blocks, a.discarded_cycles);
-  if (a.fronts.empty()) r += "fronts          none with T~_g/T0 > threshold over 3 or more phases\n";
+  int impact_fronts = 0;
+  for (const FrontEpisode& e : a.fronts) impact_fronts += e.from_impact;
+  if (impact_fronts == 0)
+    r += "fronts          none after an impact with T~_g/T0 > threshold over 3 or more phases\n";
+  if (static_cast<int>(a.fronts.size()) > impact_fronts)
+    r += fmt::format("hot spots       {} episode(s) of T~_g/T0 > threshold away from the plate "
+                     "(not impact fronts; in the file with from_impact = 0)\n",
+                     a.fronts.size() - impact_fronts);
   for (const FrontEpisode& e : a.fronts) {
+    if (!e.from_impact) continue;
     r += fmt::format(
         "front           t/T {:.2f}..{:.2f}: {:.2f} +- {:.2f} m/s (lab), {:.2f} m/s relative to "
         "the gas ahead; peak T~_g/T0 {:.2f}\n",
