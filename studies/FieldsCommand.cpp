@@ -40,6 +40,9 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
   cmd->add_option("--blocks", opt.blocks, "Independent blocks of cycles for uncertainties")
       ->check(CLI::Range(2, 50));
   cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number");
+  cmd->add_option("--front-threshold", opt.front_threshold,
+                  "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
+      ->check(CLI::Range(0.01, 100.0));
 }
 
 int runFields(const FieldsOptions& opt) {
@@ -78,8 +81,10 @@ int runFields(const FieldsOptions& opt) {
   PhaseAverager averager(cfg);
   for (std::size_t i = 0; i < run.frameCount(); ++i) averager.observe(run.frame(i));
 
-  const FieldsAnalysis a =
-      analyseFields(averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period));
+  FrontOptions fronts;
+  fronts.threshold = opt.front_threshold;
+  const FieldsAnalysis a = analyseFields(
+      averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
   std::string out = opt.output;
   if (out.empty()) out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   writeFieldsFile(out, a);

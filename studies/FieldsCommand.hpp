@@ -15,6 +15,7 @@ struct FieldsOptions {
   std::string period = "auto";
   int blocks = 5;
   std::string discard = "auto";
+  double front_threshold = 0.5;  // T~_g / T0 of a front (paper: 0.5)
 };
 
 void addFieldsCommand(CLI::App& app, FieldsOptions& options);
