@@ -1,0 +1,200 @@
+#include "hydro/CvodeIntegrator.hpp"
+
+#include <cvode/cvode.h>
+#include <cvode/cvode_bandpre.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sunlinsol/sunlinsol_band.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+#include <sunmatrix/sunmatrix_band.h>
+#include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace granwave::hydro {
+
+std::string cvodeFlagName(int flag) {
+  const char* name = CVodeGetReturnFlagName(flag);
+  std::string s = name ? name : "unknown";
+  std::free(const_cast<char*>(name));  // CVODE allocates the name
+  return s;
+}
+
+struct CvodeIntegrator::Impl {
+  SUNContext ctx = nullptr;
+  N_Vector y = nullptr, abstol = nullptr, constraints = nullptr;
+  SUNMatrix A = nullptr;
+  SUNLinearSolver LS = nullptr;
+  SUNNonlinearSolver NLS = nullptr;
+  void* cvode = nullptr;
+  RightHandSide f;
+  ComponentName name;
+  std::vector<double> out;
+  double t = 0;
+  int n = 0;
+  std::string rhs_error;  // an exception escaping the RHS, reported after CVODE returns
+
+  ~Impl() {
+    if (cvode) CVodeFree(&cvode);
+    if (NLS) SUNNonlinSolFree(NLS);
+    if (LS) SUNLinSolFree(LS);
+    if (A) SUNMatDestroy(A);
+    if (constraints) N_VDestroy(constraints);
+    if (abstol) N_VDestroy(abstol);
+    if (y) N_VDestroy(y);
+    if (ctx) SUNContext_Free(&ctx);
+  }
+
+  static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      return self->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    } catch (const std::exception& e) {
+      self->rhs_error = e.what();
+      return -1;
+    }
+  }
+
+  // The component with the largest weighted local error estimate, -1 if unavailable.
+  int worstComponent() const {
+    N_Vector ele = N_VClone(y), w = N_VClone(y);
+    int worst = -1;
+    if (CVodeGetEstLocalErrors(cvode, ele) == CV_SUCCESS && CVodeGetErrWeights(cvode, w) == CV_SUCCESS) {
+      const double* e = N_VGetArrayPointer(ele);
+      const double* wt = N_VGetArrayPointer(w);
+      double best = -1;
+      for (int i = 0; i < n; ++i) {
+        const double v = std::abs(e[i] * wt[i]);
+        if (std::isfinite(v) && v > best) {
+          best = v;
+          worst = i;
+        }
+      }
+    }
+    N_VDestroy(ele);
+    N_VDestroy(w);
+    return worst;
+  }
+
+  [[noreturn]] void fail(const char* call, int flag) const {
+    double h = 0, tcur = t;
+    if (cvode) {
+      CVodeGetLastStep(cvode, &h);
+      CVodeGetCurrentTime(cvode, &tcur);
+    }
+    const int worst = cvode ? worstComponent() : -1;
+    std::ostringstream msg;
+    msg << call << " failed: " << cvodeFlagName(flag) << " (" << flag << ") at t = " << tcur
+        << " s, last step " << h << " s";
+    if (worst >= 0) msg << ", largest local error in " << (name ? name(worst) : "component " + std::to_string(worst));
+    if (!rhs_error.empty()) msg << "; right-hand side: " << rhs_error;
+    throw CvodeError(msg.str(), call, flag, tcur, h, worst);
+  }
+
+  void check(int flag, const char* call) const {
+    if (flag < 0) fail(call, flag);
+  }
+};
+
+namespace {
+extern "C" void silentErrorHandler(int, const char*, const char*, char*, void*) {}
+}  // namespace
+
+CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<double>& y0,
+                                 const CvodeOptions& o, ComponentName name)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.f = std::move(f);
+  m.name = std::move(name);
+  m.n = static_cast<int>(y0.size());
+  m.t = t0;
+  if (m.n == 0) throw std::invalid_argument("CVODE needs a non-empty state");
+  if (!(o.rtol > 0) || o.atol.size() != y0.size())
+    throw std::invalid_argument("CVODE tolerances: rtol must be > 0 and atol must have one entry per component");
+  for (double a : o.atol)
+    if (!(a > 0)) throw std::invalid_argument("CVODE tolerances: every atol must be > 0");
+  m.check(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
+  m.y = N_VNew_Serial(m.n, m.ctx);
+  m.abstol = N_VNew_Serial(m.n, m.ctx);
+  if (!m.y || !m.abstol) m.fail("N_VNew_Serial", -20);
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(m.y));
+  std::copy(o.atol.begin(), o.atol.end(), N_VGetArrayPointer(m.abstol));
+
+  m.cvode = CVodeCreate(o.method == CvodeMethod::Adams ? CV_ADAMS : CV_BDF, m.ctx);
+  if (!m.cvode) m.fail("CVodeCreate", -20);
+  CVodeSetErrHandlerFn(m.cvode, silentErrorHandler, nullptr);  // we report errors ourselves
+  m.check(CVodeInit(m.cvode, Impl::rhs, t0, m.y), "CVodeInit");
+  m.check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
+  m.check(CVodeSVtolerances(m.cvode, o.rtol, m.abstol), "CVodeSVtolerances");
+  m.check(CVodeSetMaxNumSteps(m.cvode, o.max_steps), "CVodeSetMaxNumSteps");
+  if (o.max_step > 0) m.check(CVodeSetMaxStep(m.cvode, o.max_step), "CVodeSetMaxStep");
+  if (o.max_order > 0) m.check(CVodeSetMaxOrd(m.cvode, o.max_order), "CVodeSetMaxOrd");
+  switch (o.method) {
+    case CvodeMethod::BdfBanded:
+      m.A = SUNBandMatrix(m.n, o.band_upper, o.band_lower, m.ctx);
+      m.LS = SUNLinSol_Band(m.y, m.A, m.ctx);
+      if (!m.A || !m.LS) m.fail("SUNLinSol_Band", -20);
+      m.check(CVodeSetLinearSolver(m.cvode, m.LS, m.A), "CVodeSetLinearSolver");
+      break;
+    case CvodeMethod::BdfKrylov:
+      m.LS = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.ctx);
+      if (!m.LS) m.fail("SUNLinSol_SPGMR", -20);
+      m.check(CVodeSetLinearSolver(m.cvode, m.LS, nullptr), "CVodeSetLinearSolver");
+      m.check(CVBandPrecInit(m.cvode, m.n, o.band_upper, o.band_lower), "CVBandPrecInit");
+      break;
+    case CvodeMethod::Adams:
+      m.NLS = SUNNonlinSol_FixedPoint(m.y, 0, m.ctx);
+      if (!m.NLS) m.fail("SUNNonlinSol_FixedPoint", -20);
+      m.check(CVodeSetNonlinearSolver(m.cvode, m.NLS), "CVodeSetNonlinearSolver");
+      break;
+  }
+  if (o.method != CvodeMethod::Adams && o.stability_limit_detection)
+    m.check(CVodeSetStabLimDet(m.cvode, SUNTRUE), "CVodeSetStabLimDet");
+  if (!o.constraints.empty()) {
+    if (o.constraints.size() != y0.size())
+      throw std::invalid_argument("CVODE constraints: one entry per component");
+    m.constraints = N_VNew_Serial(m.n, m.ctx);
+    std::copy(o.constraints.begin(), o.constraints.end(), N_VGetArrayPointer(m.constraints));
+    m.check(CVodeSetConstraints(m.cvode, m.constraints), "CVodeSetConstraints");
+  }
+  m.out.assign(y0.begin(), y0.end());
+}
+
+CvodeIntegrator::~CvodeIntegrator() = default;
+CvodeIntegrator::CvodeIntegrator(CvodeIntegrator&&) noexcept = default;
+CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = default;
+
+void CvodeIntegrator::advanceTo(double tout) {
+  Impl& m = *impl_;
+  m.rhs_error.clear();
+  sunrealtype t = m.t;
+  const int flag = CVode(m.cvode, tout, m.y, &t, CV_NORMAL);
+  if (flag < 0) m.fail("CVode", flag);
+  m.t = t;
+  const double* y = N_VGetArrayPointer(m.y);
+  std::copy(y, y + m.n, m.out.begin());
+}
+
+double CvodeIntegrator::time() const { return impl_->t; }
+const std::vector<double>& CvodeIntegrator::state() const { return impl_->out; }
+
+CvodeStats CvodeIntegrator::stats() const {
+  const Impl& m = *impl_;
+  CvodeStats s;
+  CVodeGetNumSteps(m.cvode, &s.steps);
+  CVodeGetNumRhsEvals(m.cvode, &s.rhs_evals);
+  CVodeGetNumErrTestFails(m.cvode, &s.err_test_fails);
+  CVodeGetNumNonlinSolvConvFails(m.cvode, &s.nonlin_conv_fails);
+  CVodeGetNumNonlinSolvIters(m.cvode, &s.nonlin_iters);
+  CVodeGetLastStep(m.cvode, &s.last_step);
+  CVodeGetLastOrder(m.cvode, &s.last_order);
+  if (m.LS) {
+    CVodeGetNumLinRhsEvals(m.cvode, &s.lin_rhs_evals);
+    CVodeGetNumJacEvals(m.cvode, &s.jac_evals);
+  }
+  return s;
+}
+
+}  // namespace granwave::hydro
