@@ -43,6 +43,14 @@ void CellGrid::remove(int p) {
 
 int CellGrid::neighbours(int cell, Neighbour out[9]) const {
   const int cx0 = cx(cell), cz0 = cz(cell);
+  if (cx0 > 0 && cx0 + 1 < g_.nx && cz0 > 0 && cz0 + 1 < g_.nz) {
+    // Interior cell (almost all of them): no wrapping, no shifts.
+    const int nx = g_.nx;
+    int n = 0;
+    for (int dz = -nx; dz <= nx; dz += nx)
+      for (int dx = -1; dx <= 1; ++dx) out[n++] = {cell + dz + dx, 0.0, 0.0};
+    return 9;
+  }
   int n = 0;
   for (int dz = -1; dz <= 1; ++dz) {
     int cz1 = cz0 + dz;

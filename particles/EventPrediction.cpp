@@ -149,8 +149,9 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
 
 void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) const {
   const double d = cfg_.diameter, g = cfg_.gravity;
-  // The plate's state now, once: riders' positions follow from it without sin/cos.
-  const double zb_now = cfg_.plate.height(now_), vb_now = cfg_.plate.velocity(now_);
+  // The plate's state now, evaluated once and only if a rider is met (sin/cos are costly).
+  double zb_now = 0, vb_now = 0;
+  bool plate_known = false;
   const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(i), nb);
@@ -164,6 +165,11 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
         oz = q.z + (q.vz - 0.5 * g * dt) * dt;
         ovz = q.vz - g * dt;
       } else {
+        if (!plate_known) {
+          zb_now = cfg_.plate.height(now_);
+          vb_now = cfg_.plate.velocity(now_);
+          plate_known = true;
+        }
         oz = zb_now + q.ride_offset;
         ovz = vb_now;
       }

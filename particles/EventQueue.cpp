@@ -9,45 +9,41 @@ EventQueue::EventQueue(int particles) { reset(particles); }
 void EventQueue::reset(int particles) {
   heap_.resize(particles);
   pos_.resize(particles);
-  key_.assign(particles, std::numeric_limits<double>::infinity());
-  for (int i = 0; i < particles; ++i) place(i, i);
+  for (int i = 0; i < particles; ++i) place(i, {std::numeric_limits<double>::infinity(), i});
 }
 
 void EventQueue::update(int id, double time) {
-  const double old = key_[id];
-  key_[id] = time;
+  const int pos = pos_[id];
+  const double old = heap_[pos].key;
   if (time < old) {
-    siftUp(pos_[id]);
+    siftUp(pos, {time, id});
   } else {
-    siftDown(pos_[id]);
+    siftDown(pos, {time, id});
   }
 }
 
-void EventQueue::siftUp(int pos) {
-  const int id = heap_[pos];
-  const double k = key_[id];
+void EventQueue::siftUp(int pos, Node node) {
   while (pos > 0) {
     const int parent = (pos - 1) >> 1;
-    if (key_[heap_[parent]] <= k) break;
+    if (heap_[parent].key <= node.key) break;
     place(pos, heap_[parent]);
     pos = parent;
   }
-  place(pos, id);
+  place(pos, node);
 }
 
-void EventQueue::siftDown(int pos) {
+void EventQueue::siftDown(int pos, Node node) {
   const int n = size();
-  const int id = heap_[pos];
-  const double k = key_[id];
+  // Move the hole to a leaf along the smaller children...
   for (;;) {
     int child = 2 * pos + 1;
     if (child >= n) break;
-    if (child + 1 < n && key_[heap_[child + 1]] < key_[heap_[child]]) ++child;
-    if (key_[heap_[child]] >= k) break;
+    child += (child + 1 < n) & (heap_[child + 1].key < heap_[child].key);
     place(pos, heap_[child]);
     pos = child;
   }
-  place(pos, id);
+  // ...then bring the key back up to where it belongs.
+  siftUp(pos, node);
 }
 
 }  // namespace granwave

@@ -2,6 +2,11 @@
 // Future-event list: an indexed binary min-heap holding exactly one entry per particle,
 // keyed by that particle's next event time. Updating a particle's time re-sifts its entry
 // (O(log N)); there are never stale heap entries, only stale events (see Event.hpp).
+// Keys are stored inside the heap nodes, so sifting reads contiguous memory (the key lookup
+// through a second array was a quarter of the cache misses at N = 10^5). A processed
+// particle's new event usually belongs near the bottom, so sifting down is bottom-up
+// (Floyd): the hole goes to a leaf along the smaller children, one comparison per level and
+// no branch on the new key, then the key sifts up the few levels it must.
 #include <cstdint>
 #include <vector>
 
@@ -12,22 +17,25 @@ class EventQueue {
   explicit EventQueue(int particles = 0);
   void reset(int particles);  // all keys +inf
 
-  int top() const { return heap_[0]; }
-  double topTime() const { return key_[heap_[0]]; }
-  double time(int id) const { return key_[id]; }
+  int top() const { return heap_[0].id; }
+  double topTime() const { return heap_[0].key; }
+  double time(int id) const { return heap_[pos_[id]].key; }
   void update(int id, double time);
   int size() const { return static_cast<int>(heap_.size()); }
 
  private:
-  void siftUp(int pos);
-  void siftDown(int pos);
-  void place(int pos, int id) {
-    heap_[pos] = id;
-    pos_[id] = pos;
+  struct Node {
+    double key;
+    int id;
+  };
+  void siftUp(int pos, Node node);
+  void siftDown(int pos, Node node);
+  void place(int pos, Node node) {
+    heap_[pos] = node;
+    pos_[node.id] = pos;
   }
-  std::vector<int> heap_;    // heap position -> particle
-  std::vector<int> pos_;     // particle -> heap position
-  std::vector<double> key_;  // particle -> event time
+  std::vector<Node> heap_;  // heap position -> (time, particle)
+  std::vector<int> pos_;    // particle -> heap position
 };
 
 }  // namespace granwave
