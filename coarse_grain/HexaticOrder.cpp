@@ -7,9 +7,8 @@
 
 namespace granwave {
 
-std::vector<std::vector<int>> neighboursWithin(std::span<const double> x,
-                                               std::span<const double> z, double cutoff,
-                                               double width, bool periodic_x) {
+std::vector<std::vector<int>> neighboursWithin(std::span<const double> x, std::span<const double> z,
+                                               double cutoff, double width, bool periodic_x) {
   if (x.size() != z.size())
     throw std::invalid_argument("neighbour search: " + std::to_string(x.size()) + " x but " +
                                 std::to_string(z.size()) + " z positions");
@@ -39,7 +38,8 @@ std::vector<std::vector<int>> neighboursWithin(std::span<const double> x,
     return cz > 0 ? std::clamp(static_cast<int>((v - zlo) / cz), 0, nz - 1) : 0;
   };
   std::vector<std::vector<int>> cell(static_cast<std::size_t>(nx) * nz);
-  for (int i = 0; i < n; ++i) cell[static_cast<std::size_t>(cellZ(z[i])) * nx + cellX(x[i])].push_back(i);
+  for (int i = 0; i < n; ++i)
+    cell[static_cast<std::size_t>(cellZ(z[i])) * nx + cellX(x[i])].push_back(i);
 
   const double cut2 = cutoff * cutoff;
   const int reach = nx == 1 ? 0 : 1;

@@ -44,6 +44,22 @@ double crossingPosition(const std::vector<double>& D, int rot, int e, int b) {
   return 0.5 * (first + last);
 }
 
+// F = 1 - std/mean of the values v >= median(v) / 2 (the plateau without the transition).
+double plateauFlatness(const std::vector<double>& v) {
+  std::vector<double> sorted = v;
+  std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const double half_level = 0.5 * sorted[sorted.size() / 2];
+  double sum = 0, sum2 = 0;
+  int count = 0;
+  for (double x : v) {
+    if (x < half_level) continue;
+    sum += x, sum2 += x * x, ++count;
+  }
+  if (count == 0 || sum <= 0) return 0;
+  const double mean = sum / count;
+  return 1.0 - std::sqrt(std::max(0.0, sum2 / count - mean * mean)) / mean;
+}
+
 }  // namespace
 
 KinkResult detectKinks(const SurfaceProfile& cycle_a, const SurfaceProfile& cycle_b,
@@ -53,17 +69,17 @@ KinkResult detectKinks(const SurfaceProfile& cycle_a, const SurfaceProfile& cycl
 
 KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOptions& opt) {
   if (cycles.size() < 2)
-    throw std::invalid_argument("kink detection needs profiles from at least 2 consecutive "
-                                "cycles, got " +
-                                std::to_string(cycles.size()));
+    throw std::invalid_argument(
+        "kink detection needs profiles from at least 2 consecutive cycles, got " +
+        std::to_string(cycles.size()));
   const SurfaceProfile& first = cycles.front();
   if (first.columns() < 1 || !(first.diameter > 0) || !(first.column_width > 0))
     throw std::invalid_argument("kink detection: empty profile or no positive diameter");
   for (const SurfaceProfile& p : cycles) {
     if (p.columns() != first.columns() || p.periodic_x != first.periodic_x ||
         p.column_width != first.column_width || p.diameter != first.diameter)
-      throw std::invalid_argument("kink detection: profiles differ in columns, width, diameter "
-                                  "or boundary type");
+      throw std::invalid_argument(
+          "kink detection: profiles differ in columns, width, diameter or boundary type");
   }
   const int n = first.columns();
   const double d = first.diameter, w = first.column_width;
@@ -107,8 +123,8 @@ KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOpti
       merged.push_back(run);
   }
   // Periodic: the first and last domains meet across the start of the scan.
-  const bool wrap_merge = first.periodic_x && merged.size() >= 2 &&
-                          merged.front().sign == merged.back().sign;
+  const bool wrap_merge =
+      first.periodic_x && merged.size() >= 2 && merged.front().sign == merged.back().sign;
   if (wrap_merge) {
     merged.front().start = merged.back().start - n;  // negative start: wraps
     merged.pop_back();
@@ -120,15 +136,13 @@ KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOpti
     dom.last_column = (rot + run.end) % n;
     dom.sign = run.sign;
     dom.width_d = (run.end - run.start + 1) * w / d;
-    double sum = 0, peak = 0;
-    for (int j = run.start; j <= run.end; ++j) {
-      const double v = run.sign * r.difference[((rot + j) % n + n) % n];
-      sum += v;
-      peak = std::max(peak, v);
-    }
-    const double mean = sum / (run.end - run.start + 1);
+    std::vector<double> v;
+    for (int j = run.start; j <= run.end; ++j)
+      v.push_back(run.sign * r.difference[((rot + j) % n + n) % n]);
+    double mean = 0;
+    for (double x : v) mean += x / static_cast<double>(v.size());
     dom.mean_difference_d = mean / d;
-    dom.flatness = peak > 0 ? mean / peak : 0;
+    dom.flatness = plateauFlatness(v);
     r.domains.push_back(dom);
   }
 

@@ -14,7 +14,7 @@
 //     D(x) = <(-1)^c (h_c(x) - h_{c+1}(x))>_{c = 0 .. K-2}       (= h_0 - h_1 for K = 2)
 //
 // is twice the f/2 component of the surface at that phase; averaging over pairs lowers the
-// grain-scale noise by sqrt(K - 1). The local period-2 phase is s(x) = sign D(x) with a dead
+// grain-scale noise (see below). The local period-2 phase is s(x) = sign D(x) with a dead
 // band: s = 0 where |D| < dead_band. Domains are runs of equal non-zero s; runs narrower than
 // min_domain are dropped as noise, then neighbouring runs of equal sign (separated only by
 // dead band or dropped runs) are merged. A kink is the boundary between two neighbouring
@@ -23,10 +23,15 @@
 // middle of the first and last crossing if noise gives several).
 //
 // Flat domains. The antinodes of a subharmonic standing surface wave also have opposite
-// period-2 signs. What distinguishes a kink is that its domains are plateaus: the flatness
-// F = <s D> / max(s D) over a domain is close to 1 for a plateau (0.8-0.95 with grain noise)
-// and at most ~0.75 for a sinusoidal half wave of crest-to-trough height >= 4 dead bands
-// (2/pi = 0.64 without dead band). Both domains of a kink need F >= min_flatness.
+// period-2 signs. What distinguishes a kink is that its domains are plateaus. With P the
+// median of s D over a domain, its plateau columns are those with s D >= P/2 (this leaves
+// out the kink's own transition columns) and its flatness is F = 1 - std/mean of s D over
+// them. A plateau with relative noise eps has F ~ 1 - eps; a sinusoidal antinode (half wave)
+// has F = 0.73 - 0.77 whatever its amplitude, up to 0.82 only when its crest-to-trough height
+// is below 2 dead bands (1 d) and the dead band clips it. Both domains of a kink need
+// F >= min_flatness (0.8), so kinks need eps below ~0.15: average over about 10 cycles
+// (noise on D: sigma_h sqrt(4K - 6) / (K - 1), sqrt(2) sigma_h for K = 2). A domain of only
+// 3 columns next to a kink of width ~d is not flat by this measure (F ~ 0.7).
 //
 // Only period-2 kinks are detected; the period-tripling kinks of wet experiments (Butzhammer
 // et al. 2015) would need the f/3 component instead.
@@ -47,18 +52,19 @@ struct KinkOptions {
   // experiments) and than the runs that grain-scale noise forms by chance (one or two
   // columns); 3 d.
   double min_domain = 3.0;
-  // Least domain flatness F (see above): 0.8 separates plateaus (>= 0.8 with noise) from
-  // sinusoidal antinodes (<= 0.75 for crest-to-trough >= 2 d).
+  // Least domain flatness F (see above): a plateau with relative noise eps has F ~ 1 - eps
+  // (0.85 on average at eps = 0.1), sinusoidal antinodes F <= 0.77 (up to 0.82 for
+  // crest-to-trough < 1 d). 0 switches the flatness test off.
   double min_flatness = 0.8;
 };
 
 struct KinkDomain {
-  int first_column = 0;    // inclusive; with periodic x a domain may wrap (last < first)
-  int last_column = 0;     // inclusive
-  int sign = 0;            // +1: h_0 above h_1 there, -1: below
-  double width_d = 0;      // domain width / d
+  int first_column = 0;          // inclusive; with periodic x a domain may wrap (last < first)
+  int last_column = 0;           // inclusive
+  int sign = 0;                  // +1: h_0 above h_1 there, -1: below
+  double width_d = 0;            // domain width / d
   double mean_difference_d = 0;  // <s D> / d over the domain
-  double flatness = 0;     // F = <s D> / max(s D)
+  double flatness = 0;           // F = 1 - std/mean of s D over the plateau columns
 };
 
 struct KinkResult {

@@ -83,9 +83,10 @@ StateResult classifyState(const std::vector<Snapshot>& cycles, double width, dou
                           bool periodic_x, const StateOptions& opt) {
   const int K = static_cast<int>(cycles.size());
   if (K < 2)
-    throw std::invalid_argument("state classification needs snapshots from at least 2 "
-                                "consecutive cycles at one phase, got " +
-                                std::to_string(K));
+    throw std::invalid_argument(
+        "state classification needs snapshots from at least 2 consecutive cycles at one phase, "
+        "got " +
+        std::to_string(K));
   if (!(diameter > 0))
     throw std::invalid_argument("state classification: diameter must be positive");
 

@@ -59,19 +59,19 @@ enum class LayerState { crystal, amorphous, liquid_like };
 std::string_view toString(LayerState state);  // "crystal", "amorphous", "liquid-like"
 
 struct StateOptions {
-  HexaticOptions hexatic;           // psi6 neighbours: 1.2 d, >= 2 bonds
-  double neighbour_cutoff = 1.5;    // d, initial neighbours for the mobility
-  double mobility_threshold = 0.15; // d, mean relative displacement per cycle
-  double crystal_threshold = 0.7;   // <|psi6|>
+  HexaticOptions hexatic;            // psi6 neighbours: 1.2 d, >= 3 bonds
+  double neighbour_cutoff = 1.5;     // d, initial neighbours for the mobility
+  double mobility_threshold = 0.15;  // d, mean relative displacement per cycle
+  double crystal_threshold = 0.7;    // <|psi6|>
 };
 
 struct StateResult {
   LayerState state = LayerState::amorphous;
-  double mean_relative_displacement_d = 0;  // M / d
+  double mean_relative_displacement_d = 0;    // M / d
   double mean_collective_displacement_d = 0;  // |<Delta r_j>_j| / d, averaged over pairs
-  double mean_abs_psi6 = 0;                 // <|psi6|>, averaged over snapshots
-  double abs_mean_psi6 = 0;                 // |<psi6>|, averaged over snapshots
-  int cycles = 0;                           // K
+  double mean_abs_psi6 = 0;                   // <|psi6|>, averaged over snapshots
+  double abs_mean_psi6 = 0;                   // |<psi6>|, averaged over snapshots
+  int cycles = 0;                             // K
 };
 
 // Mean relative displacement <delta_j> (m) between two snapshots of the same particles,

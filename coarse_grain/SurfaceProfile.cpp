@@ -60,10 +60,9 @@ void fillEmptyColumns(std::vector<double>& h, const std::vector<bool>& filled, b
 SurfaceProfile surfaceProfile(const Snapshot& snapshot, double width, double diameter,
                               bool periodic_x, const SurfaceProfileOptions& options) {
   if (!(width > 0) || !(diameter > 0))
-    throw std::invalid_argument("surface profile needs a positive container width and diameter, "
-                                "got width = " +
-                                std::to_string(width) + " m, d = " + std::to_string(diameter) +
-                                " m");
+    throw std::invalid_argument(
+        "surface profile needs a positive container width and diameter, got width = " +
+        std::to_string(width) + " m, d = " + std::to_string(diameter) + " m");
   if (options.n_columns < 0)
     throw std::invalid_argument("surface profile: n_columns must be >= 0 (0: one per diameter)");
   if (snapshot.x.size() != snapshot.z.size())

@@ -16,8 +16,9 @@ void checkProfile(const SurfaceProfile& p) {
     throw std::invalid_argument("surface spectrum needs at least 2 columns, got " +
                                 std::to_string(p.columns()));
   if (!(p.diameter > 0) || !(p.column_width > 0))
-    throw std::invalid_argument("surface spectrum: profile has no positive diameter or column "
-                                "width (build it with surfaceProfile)");
+    throw std::invalid_argument(
+        "surface spectrum: profile has no positive diameter or column width (build it with "
+        "surfaceProfile)");
 }
 
 // Mode coefficients a_m (see the header) of the mean-removed profile. FFTW_ESTIMATE plans
@@ -41,8 +42,8 @@ std::vector<std::complex<double>> modeCoefficients(const SurfaceProfile& p, doub
   // (A n at the Nyquist mode m = n/2). The factor exp(-i pi m / n) refers the phase to the
   // column centres x_j = (j + 1/2) w instead of the column edges.
   std::vector<std::complex<double>> y(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, x.data(), reinterpret_cast<fftw_complex*>(y.data()),
-                                        FFTW_ESTIMATE);
+  fftw_plan plan =
+      fftw_plan_dft_r2c_1d(n, x.data(), reinterpret_cast<fftw_complex*>(y.data()), FFTW_ESTIMATE);
   fftw_execute(plan);
   fftw_destroy_plan(plan);
   std::vector<std::complex<double>> a(n / 2 + 1);
@@ -78,8 +79,8 @@ SurfaceSpectrum surfaceSpectrum(const SurfaceProfile& profile, const SurfaceWave
   SurfaceSpectrum s;
   s.mean_height = meanOf(profile.height);
   s.mode = modeCoefficients(profile, s.mean_height);
-  const int top = highestAdmittedMode(profile, static_cast<int>(s.mode.size()) - 1,
-                                      opt.min_wavelength);
+  const int top =
+      highestAdmittedMode(profile, static_cast<int>(s.mode.size()) - 1, opt.min_wavelength);
   double best = 0;
   for (int m = 1; m <= top; ++m) {
     if (std::abs(s.mode[m]) > best) {
@@ -98,16 +99,16 @@ SurfaceWaveResult detectStandingWave(const std::vector<SurfaceProfile>& cycles,
                                      const SurfaceWaveOptions& opt) {
   const int K = static_cast<int>(cycles.size());
   if (K < 2)
-    throw std::invalid_argument("standing-wave detection needs profiles from at least 2 "
-                                "consecutive cycles, got " +
-                                std::to_string(K));
+    throw std::invalid_argument(
+        "standing-wave detection needs profiles from at least 2 consecutive cycles, got " +
+        std::to_string(K));
   const SurfaceProfile& first = cycles.front();
   checkProfile(first);
   for (const SurfaceProfile& p : cycles) {
     if (p.columns() != first.columns() || p.periodic_x != first.periodic_x ||
         p.column_width != first.column_width || p.diameter != first.diameter)
-      throw std::invalid_argument("standing-wave detection: profiles differ in columns, width, "
-                                  "diameter or boundary type");
+      throw std::invalid_argument(
+          "standing-wave detection: profiles differ in columns, width, diameter or boundary type");
   }
 
   std::vector<std::vector<std::complex<double>>> a;

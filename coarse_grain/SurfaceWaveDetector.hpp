@@ -62,20 +62,20 @@ struct SurfaceSpectrum {
   // a_m in m for m = 0 .. M (M = N - 1 with walls, N / 2 periodic); a_0 = 0 (mean removed).
   // Real (imaginary part 0) with walls.
   std::vector<std::complex<double>> mode;
-  double mean_height = 0;     // m, <h>
-  int dominant_mode = 0;      // m* among the admitted modes (0 if the profile is flat)
-  double amplitude_d = 0;     // |a_m*| / d
-  double wavelength_d = 0;    // lambda(m*) / d (0 if m* = 0)
+  double mean_height = 0;   // m, <h>
+  int dominant_mode = 0;    // m* among the admitted modes (0 if the profile is flat)
+  double amplitude_d = 0;   // |a_m*| / d
+  double wavelength_d = 0;  // lambda(m*) / d (0 if m* = 0)
 };
 
 struct SurfaceWaveResult {
   bool detected = false;
-  int mode = 0;                         // m*
-  double wavelength_d = 0;              // lambda(m*) / d
-  double amplitude_d = 0;               // rms over cycles of |a_m*| / d
-  double subharmonic_amplitude_d = 0;   // |<(-1)^c a_m*(c)>_c| / d
-  double alternation_fraction = 0;      // share of pairs with Re(a(c+1) conj a(c)) < 0
-  int cycles = 0;                       // K
+  int mode = 0;                        // m*
+  double wavelength_d = 0;             // lambda(m*) / d
+  double amplitude_d = 0;              // rms over cycles of |a_m*| / d
+  double subharmonic_amplitude_d = 0;  // |<(-1)^c a_m*(c)>_c| / d
+  double alternation_fraction = 0;     // share of pairs with Re(a(c+1) conj a(c)) < 0
+  int cycles = 0;                      // K
 };
 
 // Wavelength of mode m (m >= 1) in d for a profile's boundary type and width.
