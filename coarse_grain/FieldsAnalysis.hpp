@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "coarse_grain/PatternSampler.hpp"
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
 #include "coarse_grain/WaveFront.hpp"
@@ -31,6 +32,7 @@ struct FieldsAnalysis {
   std::vector<PhaseFields> per_block;
   std::vector<double> front_height, front_peak;  // [phase]
   std::vector<FrontEpisode> fronts;
+  PatternResult patterns;  // filled by the caller from a PatternSampler (may be unavailable)
   double phaseTime(int phase) const { return phase / (samples_per_cycle * context.frequency); }
   double plateHeight(int phase) const;
 };

@@ -169,6 +169,27 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
     f.writeDataset(grp + "/velocity", v, {Z, 1, X, 3});
   }
 
+  f.createGroup("/patterns");
+  {
+    const PatternResult& pr = a.patterns;
+    const std::string g = "/patterns";
+    f.writeAttribute<std::int64_t>(g, "available", pr.available ? 1 : 0);
+    if (pr.available) {
+      f.writeAttribute<double>(g, "phase", pr.phase);
+      f.writeAttribute<std::int64_t>(g, "cycles", pr.cycles);
+      f.writeAttribute<std::int64_t>(g, "surface_wave", pr.surface_wave.detected ? 1 : 0);
+      f.writeAttribute<std::int64_t>(g, "surface_wave_mode", pr.surface_wave.mode);
+      f.writeAttribute<double>(g, "surface_wave_wavelength_d", pr.surface_wave.wavelength_d);
+      f.writeAttribute<double>(g, "surface_wave_amplitude_d", pr.surface_wave.amplitude_d);
+      f.writeAttribute<double>(g, "surface_wave_alternation", pr.surface_wave.alternation_fraction);
+      f.writeAttribute<std::int64_t>(g, "kinks", static_cast<std::int64_t>(pr.kinks.kink_x.size()));
+      f.writeStringAttribute(g, "state", std::string(toString(pr.state.state)));
+      f.writeAttribute<double>(g, "mean_abs_psi6", pr.state.mean_abs_psi6);
+      f.writeAttribute<double>(g, "mean_relative_displacement_d",
+                               pr.state.mean_relative_displacement_d);
+    }
+  }
+
   f.createGroup("/parameters");
   const std::string par = "/parameters";
   f.writeStringAttribute(par, "format", kFieldsFormat);

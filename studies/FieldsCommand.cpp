@@ -79,12 +79,19 @@ int runFields(const FieldsOptions& opt) {
   PhaseAveragerConfig cfg = phaseAveragerConfig(scene, P, opt.blocks, discard);
   cfg.total_cycles = static_cast<int>(run.recordCount() / M);
   PhaseAverager averager(cfg);
-  for (std::size_t i = 0; i < run.frameCount(); ++i) averager.observe(run.frame(i));
+  PatternSampler patterns({M});
+  for (std::size_t i = 0; i < run.frameCount(); ++i) {
+    const Snapshot s = run.frame(i);
+    averager.observe(s);
+    patterns.observe(s);
+  }
 
   FrontOptions fronts;
   fronts.threshold = opt.front_threshold;
-  const FieldsAnalysis a = analyseFields(
+  FieldsAnalysis a = analyseFields(
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
+  a.patterns = classifyPatterns(patterns, scene.container.width, scene.particles.diameter,
+                                scene.container.periodic_x);
   std::string out = opt.output;
   if (out.empty()) out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   writeFieldsFile(out, a);

@@ -57,6 +57,15 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
     r += fmt::format("hot spots       {} episode(s) of T~_g/T0 > threshold away from the plate "
                      "(not impact fronts; in the file with from_impact = 0)\n",
                      a.fronts.size() - impact_fronts);
+  if (a.patterns.available) {
+    const PatternResult& p = a.patterns;
+    r += fmt::format(
+        "patterns        at t/T = {:.1f} over the last {} cycles: {}; surface wave {} (mode {}, "
+        "{:.2f} d, alternation {:.2f}); {} kink(s); <|psi6|> {:.2f}, relative mobility {:.2f} d\n",
+        p.phase, p.cycles, toString(p.state.state), p.surface_wave.detected ? "yes" : "no",
+        p.surface_wave.mode, p.surface_wave.amplitude_d, p.surface_wave.alternation_fraction,
+        p.kinks.kink_x.size(), p.state.mean_abs_psi6, p.state.mean_relative_displacement_d);
+  }
   for (const FrontEpisode& e : a.fronts) {
     if (!e.from_impact) continue;
     r += fmt::format(

@@ -77,10 +77,13 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   CenterOfMassSeries com;
   sim.addObserver(&com);
   std::unique_ptr<PhaseAverager> averager;
+  std::unique_ptr<PatternSampler> patterns;
   if (!opt.fields.empty()) {
     averager = std::make_unique<PhaseAverager>(
         phaseAveragerConfig(scene, opt.fields_period, opt.fields_blocks, -1));
+    patterns = std::make_unique<PatternSampler>(PatternSamplerConfig{scene.run.phases_per_cycle});
     sim.addObserver(averager.get());
+    sim.addObserver(patterns.get());
   }
   ProgressReporter progress(scene.run.duration);
   if (!opt.quiet) sim.addObserver(&progress);
@@ -126,8 +129,10 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
     PeriodResult period;
     int discarded = 0;
     const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
-    const FieldsAnalysis a = analyseFields(
+    FieldsAnalysis a = analyseFields(
         *averager, fieldsContext(scene, "live: " + opt.scene_path, sceneToToml(scene), layer_period));
+    a.patterns = classifyPatterns(*patterns, scene.container.width, scene.particles.diameter,
+                                  scene.container.periodic_x);
     writeFieldsFile(opt.fields, a);
     fmt::print("{}", formatFieldsSummary(a));
     fmt::print("fields output   {} (+ {})\n", opt.fields, xdmfSidecarPath(opt.fields));
