@@ -83,6 +83,7 @@ class EdSimulation {
   // execution (EventExecution.cpp)
   void process(int i);
   void doPair(int i, int j, Vec2 image_shift);
+  void doRiderPair(int i, int j, double rx);
   void doWall(int i, WallId wall);
   void doCross(int i, CrossDirection dir);
   void doTakeOff(int i);
@@ -91,6 +92,7 @@ class EdSimulation {
   double approachTolerance(double speed_a, double speed_b) const;
   bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
+  bool pinched(int i, Vec2 away, Motion rigid, int exclude) const;
   void noteCollision(int i, int partner);
   bool tcElastic(int i, int j) const;
   // state

@@ -115,12 +115,45 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
   return true;
 }
 
+void EdSimulation::doRiderPair(int i, int j, double rx) {
+  // Two particles carried by the same wall: their vertical separation is fixed, so the
+  // contact acts horizontally, a 1D collision in x (the wall takes any vertical impulse).
+  // Riders exist only with walls, so there is no virial to book (pressure is measured in
+  // fully periodic boxes).
+  ParticleState& a = p_[i];
+  ParticleState& b = p_[j];
+  const double closing = rx > 0 ? b.vx - a.vx : a.vx - b.vx;
+  const double tol = approachTolerance(std::abs(a.vx), std::abs(b.vx));
+  if (!(closing > tol)) {
+    predict(i);
+    predict(j);
+    return;
+  }
+  const bool elastic = tcElastic(i, j);
+  const double e_n = elastic ? 1.0 : cfg_.restitution(closing);
+  const double before = particleEnergy(a) + particleEnergy(b);
+  const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
+  a.vx = mean - e_n * half;
+  b.vx = mean + e_n * half;
+  obs_.dissipated_energy += before - particleEnergy(a) - particleEnergy(b);
+  ++obs_.collisions.pair;
+  if (elastic) ++obs_.collisions.tc_elastic;
+  noteCollision(i, j);
+  noteCollision(j, i);
+  predict(i);
+  predict(j);
+}
+
 void EdSimulation::doPair(int i, int j, Vec2 shift) {
   advance(i, now_);
   advance(j, now_);
   ParticleState& a = p_[i];
   ParticleState& b = p_[j];
   const double rx = a.x - b.x - shift.x, rz = a.z - b.z - shift.z;
+  if (a.motion == b.motion && a.motion != Motion::Ballistic) {
+    doRiderPair(i, j, rx);
+    return;
+  }
   const double dist = std::sqrt(rx * rx + rz * rz);
   const Vec2 n{rx / dist, rz / dist};
   const Vec2 va{a.vx, a.vz}, vb{b.vx, b.vz};
@@ -174,6 +207,20 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     obs_.dissipated_energy += before_rider - particleEnergy(rider);
     attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
   }
+  if (!attached && pressed) {
+    // A flyer pressed by a rider into another rider of the same wall is pinched between two
+    // bodies that move together: it joins them (a flyer pinched against the wall itself is
+    // caught in doWall).
+    ParticleState& rider = a_rides ? a : b;
+    const int flyer = a_rides ? j : i;
+    const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
+    if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
+      const double before_rider = particleEnergy(rider);
+      rider.vz = cfg_.plate.velocity(now_);
+      obs_.dissipated_energy += before_rider - particleEnergy(rider);
+      attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
+    }
+  }
   if (!attached) {
     // A collision with a vertical impulse knocks riders off their wall; one pushed into the
     // wall hits it at once (and rests again if the wall still pushes it).
@@ -183,6 +230,25 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   }
   predict(i);
   predict(j);
+}
+
+bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {
+  // Does a particle carried rigidly with the same wall (`rigid`) touch i on the side `away`?
+  // Then i, pushed against the wall (or another rider) from the other side, has no room to
+  // move: bouncing between two bodies that move together would repeat at one instant.
+  const ParticleState& s = p_[i];
+  const double d2 = cfg_.diameter * cfg_.diameter * (1.0 + 2e-9);
+  CellGrid::Neighbour nb[9];
+  const int m = cells_.neighbours(cells_.cellOf(i), nb);
+  for (int c = 0; c < m; ++c) {
+    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+      if (j == i || j == exclude || p_[j].motion != rigid) continue;
+      const ParticleState o = extrapolated(j, now_);
+      const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
+      if (rx * rx + rz * rz <= d2 && rx * away.x + rz * away.z > 0.0) return true;
+    }
+  }
+  return false;
 }
 
 void EdSimulation::doWall(int i, WallId wall) {
@@ -232,7 +298,9 @@ void EdSimulation::doWall(int i, WallId wall) {
   // Rest on (ride) the wall if the particle would leave it too slowly to matter while the
   // wall pushes it: it then moves with the wall until the wall's pull exceeds gravity.
   const double separation = (s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z;
-  if ((wall == kBottom || wall == kLid) && pushes && separation <= cfg_.rest_velocity) {
+  const Motion rigid = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
+  if ((wall == kBottom || wall == kLid) && pushes &&
+      (separation <= cfg_.rest_velocity || pinched(i, n, rigid, -1))) {
     startRiding(i, wall);
   } else if (s.motion != Motion::Ballistic &&
              (s.vz != cfg_.plate.velocity(now_))) {

@@ -178,6 +178,13 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
       const double vx = s.vx - q.vx, vz = s.vz - ovz;
       const bool linear = s.motion == q.motion || (s.motion != Motion::Ballistic &&
                                                    q.motion != Motion::Ballistic);
+      if (linear && s.motion == q.motion && s.motion != Motion::Ballistic) {
+        // Both carried by the same wall: they can only meet horizontally.
+        const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
+        const double tau = riderPairCollisionTime(rx, rz, vx, d, tol);
+        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
+        continue;
+      }
       if (linear) {
         // Same acceleration for both: the relative motion is a straight line.
         double tau = pairCollisionTime(rx, rz, vx, vz, d);

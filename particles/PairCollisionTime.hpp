@@ -28,4 +28,18 @@ inline double pairCollisionTime(double rx, double rz, double vx, double vz, doub
   return c / (-b + std::sqrt(disc));
 }
 
+// Two particles carried by the same wall keep their vertical separation rz, so they can only
+// meet horizontally: at |rx| = sqrt(d^2 - rz^2) (never if |rz| >= d). A pair found at or
+// inside that distance (round-off) collides at once only if it approaches horizontally.
+inline double riderPairCollisionTime(double rx, double rz, double vx, double diameter,
+                                     double approach_tol = 0.0) {
+  constexpr double kNever = std::numeric_limits<double>::infinity();
+  const double w2 = diameter * diameter - rz * rz;
+  if (w2 <= 0.0) return kNever;
+  const double gap = std::abs(rx) - std::sqrt(w2);
+  const double closing = rx > 0 ? -vx : vx;  // > 0 when |rx| decreases
+  if (closing <= approach_tol) return kNever;
+  return gap <= 0.0 ? 0.0 : gap / closing;
+}
+
 }  // namespace granwave

@@ -48,3 +48,16 @@ TEST(PairCollisionTime, StableForTinyGapsAndLargeSpeeds) {
   const double t = pairCollisionTime(1.0 + 1e-12, 0, -1e3, 0, 1.0);
   EXPECT_NEAR(t, 1e-15, 2e-4 * 1e-15);
 }
+
+TEST(RiderPairCollisionTime, RidersMeetOnlyHorizontally) {
+  // Vertical offset 0.6 d: contact at |rx| = 0.8 d; closing at 2 from rx = 1.8 -> t = 0.5.
+  EXPECT_NEAR(granwave::riderPairCollisionTime(1.8, 0.6, -2.0, 1.0), 0.5, 1e-15);
+  // Vertically a diameter or more apart: never.
+  EXPECT_EQ(granwave::riderPairCollisionTime(0.1, 1.0, -2.0, 1.0),
+            std::numeric_limits<double>::infinity());
+  // Overlapping by round-off (vertical offset just under d) and sliding apart: never;
+  // sliding together: at once.
+  EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, 1e-4, 1.0),
+            std::numeric_limits<double>::infinity());
+  EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0), 0.0);
+}

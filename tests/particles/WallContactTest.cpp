@@ -81,3 +81,26 @@ TEST(WallContact, RestingBallRidesPlateBelowOneGAndNeverLeaves) {
   EXPECT_NEAR(end.z[0] - end.plate_height, 0.001, 1e-12);  // resting on the plate
   EXPECT_EQ(sim.counters().collisions.rests, 1u);
 }
+
+// Regressions: resting layers on the plate once trapped the event loop (same instant,
+// collisions forever) in two configurations, now resolved exactly (docs/physics.md,
+// "Resting contacts"): a particle pinched between the plate and a plate-carried particle
+// (paper wet scene, seed 3, t = 8.40 s) and two plate-carried particles overlapping by
+// round-off while sliding (wet, Gamma = 7, t = 3.20 s). Both must run through and keep the
+// energy budget.
+TEST(WallContact, WetLayerAtGammaSevenRunsThroughResting) {
+  Scene s = test::paperScene(RestitutionKind::Wet, 3.5);
+  s.drive.gamma = 7.0;
+  runContained(s);
+}
+
+TEST(WallContact, WetLayerSeedThreeRunsThroughPinchedContacts) {
+  Scene s = test::paperScene(RestitutionKind::Wet, 8.6);
+  s.run.seed = 3;
+  EdSimulation sim = test::makeSimulation(s);
+  const Observables o0 = sim.snapshot().obs;
+  ASSERT_NO_THROW(sim.advanceTo(8.6));
+  const Observables o1 = sim.snapshot().obs;
+  EXPECT_NEAR(test::totalEnergy(o1) - test::totalEnergy(o0), o1.wall_work - o1.dissipated_energy,
+              1e-9 * o1.wall_work);
+}
