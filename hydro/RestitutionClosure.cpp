@@ -13,9 +13,9 @@ namespace granwave::hydro {
 namespace {
 
 const double kSqrtPi = std::sqrt(std::numbers::pi);
-const double kGamma21_10 = std::tgamma(2.1);                       // 1.04649
-const double kGamma11_5 = std::tgamma(2.2);                        // 1.10180
-const double kGamma8_5OverGamma3_2 = std::tgamma(1.6) / std::tgamma(1.5);  // 1.00823
+const double kGamma21_10 = std::tgamma(2.1);                               // 1.04649
+const double kGamma11_5 = std::tgamma(2.2);                                // 1.10180
+const double kGamma8_5OverGamma3_2 = std::tgamma(1.6) / std::tgamma(1.5);  // 1.00822
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void requireInUnitInterval(double value, const char* what) {

@@ -7,10 +7,12 @@
 // particle hits a flat wall with normal speed v at rate ~ v exp(-v^2/(2 theta)). The constant-e
 // factors of kinetic theory are replaced by
 //
-//     Phi_W(theta)      = <1 - e^2>   = (1/(8 theta^2)) int_0^inf u^3 e^{-u^2/(4 theta)} (1 - e(u)^2) du
-//     Phi_P(theta)      = <1 + e>_P   = (1/(2 sqrt(pi))) theta^{-3/2}
-//                                       int_0^inf u^2 e^{-u^2/(4 theta)} (1 + e(u)) du
-//     Phi_W^wall(theta) = (1/(2 theta^2)) int_0^inf v^3 e^{-v^2/(2 theta)} (1 - e(v)^2) dv
+//     Phi_W(theta)      = <1 - e^2>
+//                       = (1/(8 theta^2)) int_0^inf u^3 exp(-u^2/(4 theta)) (1 - e(u)^2) du
+//     Phi_P(theta)      = <1 + e>_P
+//                       = (1/(2 sqrt(pi))) theta^{-3/2}
+//                         int_0^inf u^2 exp(-u^2/(4 theta)) (1 + e(u)) du
+//     Phi_W^wall(theta) = (1/(2 theta^2)) int_0^inf v^3 exp(-v^2/(2 theta)) (1 - e(v)^2) dv
 //     e_eff(theta)      = sqrt(1 - Phi_W)
 //
 // Phi_W is the energy-weighted average (energy lost per collision (m/4)(1 - e^2) u^2), Phi_P
@@ -31,7 +33,7 @@
 //                          - (kappa^2/5) Gamma(11/5) (w theta)^{1/5} ] / theta
 //   wet: dPhi_P/dtheta = e_inf y exp(-y^2) / (sqrt(pi) theta)
 //        dPhi_W/dtheta = -e_inf^2 sqrt(pi) erfc(y) y / (2 theta)
-//        (using d/dy [exp(-y^2) - sqrt(pi) y erfc(y)] = -sqrt(pi) erfc(y), dy/dtheta = -y/(2 theta))
+//        (d/dy [exp(-y^2) - sqrt(pi) y erfc(y)] = -sqrt(pi) erfc(y), dy/dtheta = -y/(2 theta))
 //
 // Domain: theta > 0 (m^2/s^2). At theta <= 0 the Phi's return their theta -> 0+ limits
 // (dry: Phi_W = 0, Phi_P = 2; wet: Phi_W = 1, Phi_P = 1) and the derivatives theirs (wet: 0;
@@ -70,17 +72,17 @@ class RestitutionClosure {
   // The particle-level law e(u) at normal impact speed u >= 0 (m/s).
   double coefficient(double u) const;
 
-  double phiW(double theta) const;     // <1 - e^2>, pairs
-  double phiP(double theta) const;     // <1 + e>_P, pairs
-  double phiWall(double theta) const;  // <1 - e^2>, particle-wall
-  double dPhiWdTheta(double theta) const;     // s^2/m^2
-  double dPhiPdTheta(double theta) const;     // s^2/m^2
-  double dPhiWallDTheta(double theta) const;  // s^2/m^2
+  double phiW(double theta) const;                  // <1 - e^2>, pairs
+  double phiP(double theta) const;                  // <1 + e>_P, pairs
+  double phiWall(double theta) const;               // <1 - e^2>, particle-wall
+  double dPhiWdTheta(double theta) const;           // s^2/m^2
+  double dPhiPdTheta(double theta) const;           // s^2/m^2
+  double dPhiWallDTheta(double theta) const;        // s^2/m^2
   double effectiveRestitution(double theta) const;  // sqrt(1 - Phi_W)
   RestitutionAverages averages(double theta) const { return {phiW(theta), phiP(theta)}; }
 
   Law law() const { return law_; }
-  double restitution() const { return law_ == Law::Dry ? 0.0 : e_; }  // e or e_inf
+  double restitution() const { return e_; }  // e, e_inf (wet), 1 (dry: e(u -> 0))
   double kappa() const { return law_ == Law::Dry ? kappa_ : 0.0; }
   double onsetVelocity() const { return law_ == Law::Wet ? v_c_ : 0.0; }
 

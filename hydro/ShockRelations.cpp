@@ -159,8 +159,9 @@ JumpResiduals jumpResiduals(const GasState& up, const ShockSolution& down, doubl
   JumpResiduals r;
   r.mass = (nu1 * s - nu2 * (s - U)) / flux;
   r.momentum = (p2 - p1 - flux * U) / (flux * U);
-  r.energy = (0.5 * kDimension * (down.theta - up.theta) - 0.5 * (p1 + p2) * (1.0 / nu1 - 1.0 / nu2)) /
-             (0.5 * kDimension * down.theta);
+  r.energy =
+      (0.5 * kDimension * (down.theta - up.theta) - 0.5 * (p1 + p2) * (1.0 / nu1 - 1.0 / nu2)) /
+      (0.5 * kDimension * down.theta);
   return r;
 }
 
@@ -172,8 +173,8 @@ double idealGasDensityRatio(double mach) {
 double idealGasPressureRatio(double mach) { return (4.0 * mach * mach - 1.0) / 3.0; }
 
 IdealGasShock idealGasPistonShock(double theta1, double piston_speed) {
-  require(piston_speed > 0.0, "piston speed U_p = " + std::to_string(piston_speed) +
-                                  " m/s must be > 0");
+  require(piston_speed > 0.0,
+          "piston speed U_p = " + std::to_string(piston_speed) + " m/s must be > 0");
   require(theta1 >= 0.0, "upstream theta1 = " + std::to_string(theta1) + " must be >= 0");
   constexpr double gamma = (kDimension + 2.0) / kDimension;
   const double a = 0.25 * (gamma + 1.0) * piston_speed;

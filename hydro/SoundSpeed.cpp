@@ -28,8 +28,8 @@ double adiabaticSoundSpeed(double nu, double theta, const RestitutionClosure& re
   const double G = nu * pairCorrelation(nu);
   const double F = 1.0 + phi_p * G;
   const double theta_dF_dtheta = theta * restitution.dPhiPdTheta(theta) * G;
-  const double c2 = theta * (isothermalBracket(nu, phi_p) +
-                             (2.0 / kDimension) * F * (F + theta_dF_dtheta));
+  const double c2 =
+      theta * (isothermalBracket(nu, phi_p) + (2.0 / kDimension) * F * (F + theta_dF_dtheta));
   return std::sqrt(c2);
 }
 

@@ -21,7 +21,7 @@
 //
 //     p        = rho theta [1 + Phi_P G]
 //     eta      = (sqrt(pi)/8) rho sigma sqrt(theta) [1/G + 2 + (1 + 8/pi) G]
-//              = eta0 [1/g2 + 2 nu + (1 + 8/pi) nu G]          (the form evaluated: finite at n = 0)
+//              = eta0 [1/g2 + 2 nu + (1 + 8/pi) nu G]    (the form evaluated: finite at n = 0)
 //     lambda_b = (Phi_P/sqrt(pi)) rho sigma sqrt(theta) G = eta0 (8/pi) Phi_P nu G
 //     kappa_th = (sqrt(pi)/2) rho sigma sqrt(theta) [1/G + 3 + (9/4 + 4/pi) G]
 //              = 4 eta0 [1/g2 + 3 nu + (9/4 + 4/pi) nu G]
