@@ -76,11 +76,12 @@ HydroResult HydroSimulation::run() {
     // Per-variable noise levels (physics-hydro.md 5.3): 1e-8 of close packing, times
     // sqrt(g sigma) and g sigma for momentum and energy.
     const double v = std::sqrt(g.gravity * sigma);
+    const double a = opt_.atol_scale;
     co.atol.resize(3 * N);
     for (int i = 0; i < N; ++i) {
-      co.atol[3 * i] = 1e-8 * rho_cp;
-      co.atol[3 * i + 1] = 1e-8 * rho_cp * v;
-      co.atol[3 * i + 2] = 1e-8 * rho_cp * v * v;
+      co.atol[3 * i] = a * rho_cp;
+      co.atol[3 * i + 1] = a * rho_cp * v;
+      co.atol[3 * i + 2] = a * rho_cp * v * v;
     }
   }
   if (co.band_upper == 0) co.band_upper = co.band_lower = GranularHydro1D::kHalfBand;

@@ -17,6 +17,9 @@ struct HydroRunOptions {
   int max_cycles = 60;
   double periodic_tolerance = 0.02;
   CvodeOptions cvode;            // tolerances, method; atol and band filled in if empty
+  // atol = atol_scale x (rho_cp, rho_cp sqrt(g sigma), rho_cp g sigma) per cell when
+  // cvode.atol is empty: per-variable noise levels (physics-hydro.md 5.3).
+  double atol_scale = 1e-8;
   double initial_area_fraction = 0.5;
   double initial_theta = 0.01;   // m^2/s^2
 };

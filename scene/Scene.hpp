@@ -70,8 +70,8 @@ struct RunSpec {
 
 struct HydroSpec {
   int cells = 400;
-  double rtol = 1e-6;
-  double atol = 1e-9;
+  double rtol = 1e-4;  // CVODE relative tolerance
+  double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;
 };
 

@@ -9,7 +9,9 @@
 #include "h5/H5Error.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
+#include "hydro/CvodeIntegrator.hpp"
 #include "studies/FieldsCommand.hpp"
+#include "studies/HydroCommand.hpp"
 #include "studies/SimulateCommand.hpp"
 #include "studies/Version.hpp"
 
@@ -21,6 +23,8 @@ int main(int argc, char** argv) {
   granwave::addSimulateCommand(app, simulate);
   granwave::FieldsOptions fields;
   granwave::addFieldsCommand(app, fields);
+  granwave::HydroOptions hydro;
+  granwave::addHydroCommand(app, hydro);
   CLI11_PARSE(app, argc, argv);
 
   std::string command_line;
@@ -28,9 +32,13 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
     if (app.got_subcommand("fields")) return granwave::runFields(fields);
+    if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 2;
+  } catch (const granwave::hydro::CvodeError& e) {
+    fmt::print(stderr, "granwave: hydrodynamic solver: {}\n", e.what());
+    return 4;
   } catch (const granwave::InelasticCollapse& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 3;
