@@ -35,7 +35,7 @@ LocalState ConstitutiveModel::pressureAndSoundSpeed(double rho, double theta) co
 
 double ConstitutiveModel::wallDissipation(double p, double theta) const {
   // (1 - e_w^2) p sqrt(T / (2 pi m)) with the wall-averaged Phi_W (physics-hydro.md 2.2, 4.2)
-  return restitution.phiWall(theta) * p * std::sqrt(theta / (2 * std::numbers::pi));
+  return wall_restitution.phiWall(theta) * p * std::sqrt(theta / (2 * std::numbers::pi));
 }
 
 }  // namespace granwave::hydro

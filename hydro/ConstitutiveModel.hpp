@@ -25,6 +25,7 @@ struct LocalState {
 struct ConstitutiveModel {
   double mass = 0, sigma = 0;
   RestitutionClosure restitution;   // pair collisions
+  RestitutionClosure wall_restitution;  // particle-wall collisions (the paper: the same law)
   TransportSet transport = TransportSet::JenkinsRichman;
   double knudsen_length = 0;        // l_max, m (0 = no limiter)
 

@@ -130,7 +130,9 @@ int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) cons
     const double* c = U + kVars * i;
     d[0] = -(Fr[0] - Fl[0]) / h;
     d[1] = -(Fr[1] - Fl[1]) / h - c[0] * geff;
-    d[2] = -(Fr[2] - Fl[2]) / h - c[1] * geff - local_[i].cooling;
+    // Work of gravity with the same mass fluxes that move the mass: then total energy
+    // (kinetic + internal + potential) is conserved by the discretisation itself.
+    d[2] = -(Fr[2] - Fl[2]) / h - 0.5 * (Fl[0] + Fr[0]) * geff - local_[i].cooling;
   }
   for (int k = 0; k < kVars * N; ++k)
     if (!std::isfinite(dUdt[k])) return 1;

@@ -76,6 +76,7 @@ int runHydro(const HydroOptions& opt) {
   model.mass = dv.mass;
   model.sigma = d;
   model.restitution = closureFor(scene, dv);
+  model.wall_restitution = model.restitution;  // the paper: the same law at the walls
   model.transport = hydro::TransportSet::JenkinsRichman;
   model.knudsen_length = d;
   hydro::HydroGeometry geom;
