@@ -12,6 +12,7 @@ namespace granwave {
 enum class RestitutionKind { Constant, Dry, Wet };
 enum class InitialPlacement { Random, Lattice };
 enum class HydroRestitutionModel { Constant, Velocity };
+enum class HydroTransport { JenkinsRichman, GarzoDufty };
 
 struct ParticlesSpec {
   int count = 300;
@@ -73,6 +74,7 @@ struct HydroSpec {
   double rtol = 1e-4;  // CVODE relative tolerance
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;
+  HydroTransport transport = HydroTransport::JenkinsRichman;
 };
 
 struct Scene {

@@ -116,6 +116,12 @@ void readHydroModel(Scene& s, const Entry& e) {
   s.hydro.restitution_model = e.choice<M>({{"constant", M::Constant}, {"velocity", M::Velocity}});
 }
 
+void readHydroTransport(Scene& s, const Entry& e) {
+  using T = HydroTransport;
+  s.hydro.transport =
+      e.choice<T>({{"jenkins-richman", T::JenkinsRichman}, {"garzo-dufty", T::GarzoDufty}});
+}
+
 void readSeed(Scene& s, const Entry& e) { s.run.seed = e.integer<std::int64_t>(0); }
 
 // Readers of plain fields, given as (section member, field member) pointers.
@@ -183,6 +189,7 @@ const Field kFields[] = {
     {"hydro", "rtol", number<kH, &HydroSpec::rtol>},
     {"hydro", "atol", number<kH, &HydroSpec::atol>},
     {"hydro", "restitution_model", readHydroModel},
+    {"hydro", "transport", readHydroTransport},
 };
 
 const Field* findField(std::string_view section, std::string_view name) {

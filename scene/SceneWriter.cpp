@@ -138,6 +138,8 @@ std::string sceneToToml(const Scene& s) {
   w.key("restitution_model",
         quoted(s.hydro.restitution_model == HydroRestitutionModel::Constant ? "constant"
                                                                             : "velocity"));
+  w.key("transport", quoted(s.hydro.transport == HydroTransport::GarzoDufty ? "garzo-dufty"
+                                                                            : "jenkins-richman"));
   return w.take();
 }
 

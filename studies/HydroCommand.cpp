@@ -77,7 +77,9 @@ int runHydro(const HydroOptions& opt) {
   model.sigma = d;
   model.restitution = closureFor(scene, dv);
   model.wall_restitution = model.restitution;  // the paper: the same law at the walls
-  model.transport = hydro::TransportSet::JenkinsRichman;
+  model.transport = scene.hydro.transport == HydroTransport::GarzoDufty
+                        ? hydro::TransportSet::GarzoDufty
+                        : hydro::TransportSet::JenkinsRichman;
   model.knudsen_length = d;
   hydro::HydroGeometry geom;
   geom.cells = scene.hydro.cells;
@@ -183,7 +185,8 @@ int runHydro(const HydroOptions& opt) {
 
   fmt::print("scene           {}\n", opt.scene_path);
   fmt::print("hydro           {} cells, {} transport, restitution {}, rtol {:g}\n", geom.cells,
-             "Jenkins-Richman", scene.hydro.restitution_model == HydroRestitutionModel::Constant
+             scene.hydro.transport == HydroTransport::GarzoDufty ? "Garzo-Dufty" : "Jenkins-Richman",
+             scene.hydro.restitution_model == HydroRestitutionModel::Constant
                                     ? "constant" : "velocity-dependent (Maxwell-averaged)",
              ro.cvode.rtol);
   fmt::print("periodic state  {} after {} cycles; centre-of-mass period {}\n",

@@ -51,6 +51,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.hydro.rtol, b.hydro.rtol);
   EXPECT_EQ(a.hydro.atol, b.hydro.atol);
   EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);
+  EXPECT_EQ(a.hydro.transport, b.hydro.transport);
 }
 
 std::string sceneFile(const char* name) {
