@@ -85,6 +85,11 @@ HydroResult HydroSimulation::run() {
     }
   }
   if (co.band_upper == 0) co.band_upper = co.band_lower = GranularHydro1D::kHalfBand;
+  if (co.constraints.empty() && opt_.positivity) {
+    // rho > 0 and E > 0 (CVODE semantics 2.0), momentum free (physics-hydro.md 5.4).
+    co.constraints.assign(3 * N, 2.0);
+    for (int i = 0; i < N; ++i) co.constraints[3 * i + 1] = 0.0;
+  }
   if (co.max_step == 0) co.max_step = T / (2 * M);
 
   std::vector<double> U = initialState();

@@ -20,6 +20,7 @@ struct HydroRunOptions {
   // atol = atol_scale x (rho_cp, rho_cp sqrt(g sigma), rho_cp g sigma) per cell when
   // cvode.atol is empty: per-variable noise levels (physics-hydro.md 5.3).
   double atol_scale = 1e-8;
+  bool positivity = true;  // CVODE constraints rho > 0, E > 0
   double initial_area_fraction = 0.5;
   double initial_theta = 0.01;   // m^2/s^2
 };
