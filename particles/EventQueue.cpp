@@ -38,7 +38,7 @@ void EventQueue::siftDown(int pos, Node node) {
   for (;;) {
     int child = 2 * pos + 1;
     if (child >= n) break;
-    child += (child + 1 < n) & (heap_[child + 1].key < heap_[child].key);
+    if (child + 1 < n && heap_[child + 1].key < heap_[child].key) ++child;
     place(pos, heap_[child]);
     pos = child;
   }

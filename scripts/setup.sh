@@ -3,6 +3,7 @@
 # builds. Used by main.sh and test.sh; safe to run again (incremental).
 #   GRANWAVE_BUILD_DIR  build tree (default: build)
 #   GRANWAVE_SANITIZE   1 = address + undefined-behaviour sanitizer build
+#   GRANWAVE_BUILD_BENCH 0 = do not build the benchmark programs (default 1)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -25,5 +26,5 @@ build="${GRANWAVE_BUILD_DIR:-build}"
 sanitize="${GRANWAVE_SANITIZE:-0}"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release \
   -DGRANWAVE_SANITIZE="$([ "$sanitize" = 1 ] && echo ON || echo OFF)" \
-  -DGRANWAVE_BUILD_BENCH="$([ "$sanitize" = 1 ] && echo OFF || echo ON)" >&2
+  -DGRANWAVE_BUILD_BENCH="$([ "$sanitize" = 1 ] || [ "${GRANWAVE_BUILD_BENCH:-1}" = 0 ] && echo OFF || echo ON)" >&2
 cmake --build "$build" -j"$(nproc)" >&2

@@ -7,6 +7,7 @@ cd "$(dirname "$0")/.."
 if [ "${1:-}" = "--sanitize" ]; then
   export GRANWAVE_BUILD_DIR="${GRANWAVE_BUILD_DIR:-build-asan}" GRANWAVE_SANITIZE=1
 fi
-bash scripts/setup.sh
+# The tests do not need the benchmark programs: skip building them here.
+GRANWAVE_BUILD_BENCH=0 bash scripts/setup.sh
 build="${GRANWAVE_BUILD_DIR:-build}"
 ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
