@@ -17,36 +17,57 @@ double pairNormalSpeed(Vec2 n, Vec2 v1, Vec2 v2) {
   return -((v1.x - v2.x) * n.x + (v1.z - v2.z) * n.z);
 }
 
+namespace {
+
+struct ContactImpulse {
+  Vec2 dp;            // impulse on the particle (particle 1 of a pair)
+  double vn = 0;      // approach speed, >= 0 when approaching
+  double e_t = -1;
+};
+
+// dp = -m_eff (1 + e_n) v_n - m_eff beta (1 + e_t) v_t, with v_n, v_t the normal and
+// tangential parts of the contact-point relative velocity v_r; m_eff = m/2 for two equal
+// spheres, m against a wall (paper Eq. 3 and its wall form).
+ContactImpulse contactImpulse(Vec2 n, Vec2 vr, double m_eff, double e_n, const TangentialLaw& law,
+                              bool rough) {
+  const double vrn = vr.x * n.x + vr.z * n.z;  // < 0 when approaching
+  const Vec2 vn{vrn * n.x, vrn * n.z};
+  const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
+  ContactImpulse c;
+  c.vn = -vrn;
+  const bool tangential = rough && law.friction > 0.0;
+  if (tangential)
+    c.e_t = tangentialRestitution(law, e_n, std::abs(vrn), std::sqrt(vt.x * vt.x + vt.z * vt.z));
+  const double cn = -(1.0 + e_n) * m_eff;
+  const double ct = tangential ? -kBeta * (1.0 + c.e_t) * m_eff : 0.0;
+  c.dp = {cn * vn.x + ct * vt.x, cn * vn.z + ct * vt.z};
+  return c;
+}
+
+// Spin change of a sphere whose contact point (centre + (d/2)(-n)) takes the impulse dp.
+double spinChange(Vec2 n, Vec2 dp, double mass, double diameter) {
+  const double inertia = mass * diameter * diameter / 10.0;
+  return -0.5 * diameter / inertia * (n.z * dp.x - n.x * dp.z);  // -(d/(2I)) (n x dp)_y
+}
+
+}  // namespace
+
 PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, double mass,
                                 double diameter, double e_n, const TangentialLaw& law,
                                 bool rough) {
   const double half_d = 0.5 * diameter;
   const double ws = w1 + w2;
   const Vec2 vr{v1.x - v2.x - half_d * ws * n.z, v1.z - v2.z + half_d * ws * n.x};
-  const double vrn = vr.x * n.x + vr.z * n.z;  // < 0 when approaching
-  const Vec2 vn{vrn * n.x, vrn * n.z};
-  const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
-  const double vt_abs = std::sqrt(vt.x * vt.x + vt.z * vt.z);
-
+  const ContactImpulse c = contactImpulse(n, vr, 0.5 * mass, e_n, law, rough);
   PairCollisionResult r;
-  r.vn = -vrn;
-  const bool tangential = rough && law.friction > 0.0;
-  r.e_t = tangential ? tangentialRestitution(law, e_n, std::abs(vrn), vt_abs) : -1.0;
-  const double cn = -0.5 * (1.0 + e_n) * mass;
-  const double ct = tangential ? -0.5 * kBeta * (1.0 + r.e_t) * mass : 0.0;
-  r.impulse = {cn * vn.x + ct * vt.x, cn * vn.z + ct * vt.z};
-  r.v1 = {v1.x + r.impulse.x / mass, v1.z + r.impulse.z / mass};
-  r.v2 = {v2.x - r.impulse.x / mass, v2.z - r.impulse.z / mass};
-  if (tangential) {
-    const double inertia = mass * diameter * diameter / 10.0;
-    const double torque = n.z * r.impulse.x - n.x * r.impulse.z;  // (n x dp)_y
-    const double dw = half_d / inertia * torque;
-    r.w1 = w1 - dw;
-    r.w2 = w2 - dw;
-  } else {
-    r.w1 = w1;
-    r.w2 = w2;
-  }
+  r.vn = c.vn;
+  r.e_t = c.e_t;
+  r.impulse = c.dp;
+  r.v1 = {v1.x + c.dp.x / mass, v1.z + c.dp.z / mass};
+  r.v2 = {v2.x - c.dp.x / mass, v2.z - c.dp.z / mass};
+  const double dw = c.e_t > -1.0 ? spinChange(n, c.dp, mass, diameter) : 0.0;
+  r.w1 = w1 + dw;  // both spheres: -(d/2I) n x dp (paper Eq. 2)
+  r.w2 = w2 + dw;
   return r;
 }
 
@@ -55,24 +76,13 @@ WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double ma
                                 bool rough) {
   const double half_d = 0.5 * diameter;
   const Vec2 vr{v.x - v_wall.x - half_d * w * n.z, v.z - v_wall.z + half_d * w * n.x};
-  const double vrn = vr.x * n.x + vr.z * n.z;
-  const Vec2 vn{vrn * n.x, vrn * n.z};
-  const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
-  const double vt_abs = std::sqrt(vt.x * vt.x + vt.z * vt.z);
-
+  const ContactImpulse c = contactImpulse(n, vr, mass, e_n, law, rough);
   WallCollisionResult r;
-  r.vn = -vrn;
-  const bool tangential = rough && law.friction > 0.0;
-  r.e_t = tangential ? tangentialRestitution(law, e_n, std::abs(vrn), vt_abs) : -1.0;
-  const double cn = -(1.0 + e_n) * mass;
-  const double ct = tangential ? -kBeta * (1.0 + r.e_t) * mass : 0.0;
-  r.impulse = {cn * vn.x + ct * vt.x, cn * vn.z + ct * vt.z};
-  r.v = {v.x + r.impulse.x / mass, v.z + r.impulse.z / mass};
-  r.w = w;
-  if (tangential) {
-    const double inertia = mass * diameter * diameter / 10.0;
-    r.w = w - half_d / inertia * (n.z * r.impulse.x - n.x * r.impulse.z);
-  }
+  r.vn = c.vn;
+  r.e_t = c.e_t;
+  r.impulse = c.dp;
+  r.v = {v.x + c.dp.x / mass, v.z + c.dp.z / mass};
+  r.w = w + (c.e_t > -1.0 ? spinChange(n, c.dp, mass, diameter) : 0.0);
   return r;
 }
 
