@@ -1,7 +1,7 @@
 #pragma once
 // The scene: every user-facing parameter of a granwave run, in SI units, with the paper's
-// values as defaults (Huang et al., "Wave phenomena in vibrofluidized dry and wet granular
-// layers", Methods and Table I). Parsing and validation live in SceneParser; the derived
+// values as defaults (K. Huang, "Internal and surface waves in vibrofluidized granular
+// materials: role of cohesion", Methods and Table I). Parsing and validation live in SceneParser; the derived
 // quantities (A, v0, T0, t_c, q, v_c) in SceneDerived. No physics beyond those formulas here.
 #include <cstdint>
 #include <optional>
