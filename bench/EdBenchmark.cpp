@@ -282,7 +282,8 @@ void BM_PaperScene(benchmark::State& state) {
   std::snprintf(label, sizeof label, "%s law, reached t = %.3f s%s", wet ? "wet" : "dry",
                 sim->now(), failure.empty() ? "" : " (INELASTIC COLLAPSE)");
   state.SetLabel(label);
-  if (!failure.empty()) std::fprintf(stderr, "BM_PaperScene/wet:%d: %s\n", wet ? 1 : 0, failure.c_str());
+  if (!failure.empty())
+    std::fprintf(stderr, "BM_PaperScene/wet:%d: %s\n", wet ? 1 : 0, failure.c_str());
 }
 
 BENCHMARK(BM_PaperScene)

@@ -58,7 +58,8 @@ Run simulate(int cells, double rtol, CvodeMethod method) {
   } catch (const std::exception& e) {
     r.status = std::string("error: ") + e.what();
   }
-  r.result.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return r;
 }
 
@@ -87,7 +88,9 @@ double relL2(const std::vector<double>& a, const std::vector<double>& b) {
 }
 
 const char* name(CvodeMethod m) {
-  return m == CvodeMethod::BdfBanded ? "bdf-band" : m == CvodeMethod::BdfKrylov ? "bdf-gmres" : "adams";
+  return m == CvodeMethod::BdfBanded   ? "bdf-band"
+         : m == CvodeMethod::BdfKrylov ? "bdf-gmres"
+                                       : "adams";
 }
 
 void row(const char* kind, CvodeMethod m, int cells, double rtol, double err, const Run& r) {
@@ -110,7 +113,8 @@ int main(int argc, char** argv) {
       if (quick && rtol < 1e-5) continue;
       if (m == CvodeMethod::Adams && rtol < 1e-4) continue;  // measured: it does not get there
       const Run r = simulate(200, rtol, m);
-      row("temporal", m, 200, rtol, r.status == "ok" ? relL2(temperature(r.result, 200), T_ref) : NAN, r);
+      row("temporal", m, 200, rtol,
+          r.status == "ok" ? relL2(temperature(r.result, 200), T_ref) : NAN, r);
     }
   }
   // Spatial error.
@@ -121,7 +125,9 @@ int main(int argc, char** argv) {
     if (cells >= fine) continue;
     const Run r = simulate(cells, 1e-7, CvodeMethod::BdfBanded);
     row("spatial", CvodeMethod::BdfBanded, cells, 1e-7,
-        r.status == "ok" ? relL2(temperature(r.result, cells), temperature(ref_s.result, cells)) : NAN, r);
+        r.status == "ok" ? relL2(temperature(r.result, cells), temperature(ref_s.result, cells))
+                         : NAN,
+        r);
   }
   return 0;
 }

@@ -28,7 +28,8 @@ FieldsAnalysis analyseFields(const PhaseAverager& av, const FieldsContext& ctx,
   a.params = {ctx.mass, ctx.inertia, ctx.diameter, min_count};
   a.front_options = fo;
   a.pooled = computeFields(av.accumulator(), a.params);
-  for (int b = 0; b < c.blocks; ++b) a.per_block.push_back(computeFields(av.accumulator(), a.params, b));
+  for (int b = 0; b < c.blocks; ++b)
+    a.per_block.push_back(computeFields(av.accumulator(), a.params, b));
   a.front_height = frontHeights(a.pooled, c.grid.z0, c.grid.wz, ctx.T0, fo, &a.front_peak);
   std::vector<double> plate(a.pooled.phases);
   for (int ph = 0; ph < a.pooled.phases; ++ph) plate[ph] = a.plateHeight(ph);

@@ -38,11 +38,11 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name, const F
     s += fmt::format("<Grid Name=\"p{:04d}\" GridType=\"Uniform\">\n", ph);
     s += fmt::format("<Time Value=\"{:.9g}\"/>\n", a.phaseTime(ph));
     // Cell-centred data on a one-cell-thick slab: the mesh has (nz+1) x 2 x (nx+1) nodes.
-    s += fmt::format("<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"{} 2 {}\"/>\n",
-                     g.nz + 1, g.nx + 1);
+    s += fmt::format("<Topology TopologyType=\"3DCoRectMesh\" Dimensions=\"{} 2 {}\"/>\n", g.nz + 1,
+                     g.nx + 1);
     s += "<Geometry GeometryType=\"ORIGIN_DXDYDZ\">\n";
-    s += fmt::format("<DataItem Dimensions=\"3\" Format=\"XML\">{:.9g} 0 {:.9g}</DataItem>\n",
-                     g.z0, g.x0);
+    s += fmt::format("<DataItem Dimensions=\"3\" Format=\"XML\">{:.9g} 0 {:.9g}</DataItem>\n", g.z0,
+                     g.x0);
     s += fmt::format("<DataItem Dimensions=\"3\" Format=\"XML\">{:.9g} {:.9g} {:.9g}</DataItem>\n",
                      g.wz, a.context.diameter, g.wx);
     s += "</Geometry>\n";
@@ -109,14 +109,17 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   f.createGroup("/blocks/profiles");
   auto stack = [&](auto member) {
     std::vector<double> v;
-    for (const PhaseFields& b : a.per_block) v.insert(v.end(), (b.*member).begin(), (b.*member).end());
+    for (const PhaseFields& b : a.per_block)
+      v.insert(v.end(), (b.*member).begin(), (b.*member).end());
     return v;
   };
   put(f, "/blocks/profiles/temperature", stack(&PhaseFields::profile_temperature), {B, P, Z}, "J");
-  put(f, "/blocks/profiles/velocity_z", stack(&PhaseFields::profile_velocity_z), {B, P, Z}, "m s-1");
+  put(f, "/blocks/profiles/velocity_z", stack(&PhaseFields::profile_velocity_z), {B, P, Z},
+      "m s-1");
   put(f, "/blocks/profiles/rms_velocity_x", stack(&PhaseFields::profile_rms_velocity_x), {B, P, Z},
       "m s-1");
-  put(f, "/blocks/profiles/area_fraction", stack(&PhaseFields::profile_area_fraction), {B, P, Z}, "1");
+  put(f, "/blocks/profiles/area_fraction", stack(&PhaseFields::profile_area_fraction), {B, P, Z},
+      "1");
 
   std::vector<double> time(P), phase(P), plate(P);
   for (std::size_t k = 0; k < P; ++k) {
@@ -150,8 +153,10 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
       "m s-1");
   put(f, "/fronts/speed_relative", column([](auto& e) { return e.speed_relative; }), {E}, "m s-1");
   put(f, "/fronts/peak_temperature", column([](auto& e) { return e.peak_temperature; }), {E}, "1");
-  put(f, "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }), {E}, "m");
-  put(f, "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }), {E}, "1");
+  put(f, "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }), {E},
+      "m");
+  put(f, "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }), {E},
+      "1");
 
   for (std::size_t ph = 0; ph < P; ++ph) {
     const std::string grp = fmt::format("/xdmf/p{:04d}", ph);

@@ -36,8 +36,8 @@ Deficiency momentumDeficiency(const PhaseFields& dry, const PhaseFields& wet,
   if (r.phases_used > 0) {
     r.mean = sum / r.phases_used;
     if (r.phases_used > 1)
-      r.std_dev = std::sqrt(std::max(0.0, (sum2 - r.phases_used * r.mean * r.mean) /
-                                             (r.phases_used - 1)));
+      r.std_dev =
+          std::sqrt(std::max(0.0, (sum2 - r.phases_used * r.mean * r.mean) / (r.phases_used - 1)));
   }
   return r;
 }

@@ -16,8 +16,8 @@ namespace {
 std::vector<double> powerSpectrum(std::vector<double> x) {
   const int n = static_cast<int>(x.size());
   std::vector<std::complex<double>> out(n / 2 + 1);
-  fftw_plan plan = fftw_plan_dft_r2c_1d(n, x.data(), reinterpret_cast<fftw_complex*>(out.data()),
-                                        FFTW_ESTIMATE);
+  fftw_plan plan =
+      fftw_plan_dft_r2c_1d(n, x.data(), reinterpret_cast<fftw_complex*>(out.data()), FFTW_ESTIMATE);
   fftw_execute(plan);
   fftw_destroy_plan(plan);
   std::vector<double> power(out.size());

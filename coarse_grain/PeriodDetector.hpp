@@ -20,10 +20,10 @@ struct PeriodOptions {
 };
 
 struct PeriodResult {
-  int period = 1;                  // in drive cycles
-  int cycles_used = 0;             // K
-  std::vector<double> strength;    // strength[p] for p = 0..max_period (0, 1 unused)
-  double harmonic_amplitude = 0;   // m, amplitude of the drive-frequency component
+  int period = 1;                 // in drive cycles
+  int cycles_used = 0;            // K
+  std::vector<double> strength;   // strength[p] for p = 0..max_period (0, 1 unused)
+  double harmonic_amplitude = 0;  // m, amplitude of the drive-frequency component
 };
 
 // `height` holds M samples per cycle starting at a cycle boundary; the first

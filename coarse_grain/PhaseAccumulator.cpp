@@ -28,7 +28,7 @@ void PhaseAccumulator::add(int block, int phase, double x, double z, double vx, 
   const int cell = grid_.cellOf(x, z);
   if (cell < 0) return;
   sums_[(static_cast<std::size_t>(block) * phases_ + phase) * grid_.cells() + cell].add(vx, vz,
-                                                                                      omega);
+                                                                                        omega);
 }
 
 CellSums PhaseAccumulator::pooled(int phase, int cell) const {

@@ -16,8 +16,8 @@ struct PhaseAveragerConfig {
   int samples_per_cycle = 100;  // M
   int cycles_per_window = 2;    // P
   int blocks = 5;
-  int total_cycles = 0;         // whole cycles the run will have
-  int fixed_discard = -1;       // >= 0: discard this many cycles instead of detecting
+  int total_cycles = 0;    // whole cycles the run will have
+  int fixed_discard = -1;  // >= 0: discard this many cycles instead of detecting
   SteadyStateOptions steady;
 };
 

@@ -10,10 +10,10 @@
 namespace granwave {
 
 struct SteadyStateOptions {
-  int window = 6;        // cycles per window (even, and a multiple of 3: periods 1-3 average out)
-  int min_cycles = 5;    // never fewer discarded
+  int window = 6;      // cycles per window (even, and a multiple of 3: periods 1-3 average out)
+  int min_cycles = 5;  // never fewer discarded
   double sigmas = 3.0;
-  double floor = 1e-3;   // relative tolerance when the scatter is tiny
+  double floor = 1e-3;  // relative tolerance when the scatter is tiny
 };
 
 class SteadyStateDetector {

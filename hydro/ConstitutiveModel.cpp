@@ -14,7 +14,8 @@ LocalState ConstitutiveModel::evaluate(double rho, double theta) const {
                                       ? garzoDuftyTransport(gas, rho, theta, av)
                                       : jenkinsRichmanTransport(gas, rho, theta, av);
   double limiter = 1.0;
-  if (knudsen_length > 0) limiter = 1.0 / (1.0 + meanFreePath(gas, gas.numberDensity(rho)) / knudsen_length);
+  if (knudsen_length > 0)
+    limiter = 1.0 / (1.0 + meanFreePath(gas, gas.numberDensity(rho)) / knudsen_length);
   LocalState s;
   s.p = t.p;
   s.viscosity = (t.lambda_b + t.eta) * limiter;  // d = 2: lambda_b + 2 eta (d - 1)/d

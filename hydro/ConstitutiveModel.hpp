@@ -24,10 +24,10 @@ struct LocalState {
 
 struct ConstitutiveModel {
   double mass = 0, sigma = 0;
-  RestitutionClosure restitution;   // pair collisions
+  RestitutionClosure restitution;       // pair collisions
   RestitutionClosure wall_restitution;  // particle-wall collisions (the paper: the same law)
   TransportSet transport = TransportSet::JenkinsRichman;
-  double knudsen_length = 0;        // l_max, m (0 = no limiter)
+  double knudsen_length = 0;  // l_max, m (0 = no limiter)
 
   // Everything (pressure, transport, cooling, sound speed) at cell centres.
   LocalState evaluate(double rho, double theta) const;

@@ -61,7 +61,8 @@ struct CvodeIntegrator::Impl {
   int worstComponent() const {
     N_Vector ele = N_VClone(y), w = N_VClone(y);
     int worst = -1;
-    if (CVodeGetEstLocalErrors(cvode, ele) == CV_SUCCESS && CVodeGetErrWeights(cvode, w) == CV_SUCCESS) {
+    if (CVodeGetEstLocalErrors(cvode, ele) == CV_SUCCESS &&
+        CVodeGetErrWeights(cvode, w) == CV_SUCCESS) {
       const double* e = N_VGetArrayPointer(ele);
       const double* wt = N_VGetArrayPointer(w);
       double best = -1;
@@ -88,7 +89,9 @@ struct CvodeIntegrator::Impl {
     std::ostringstream msg;
     msg << call << " failed: " << cvodeFlagName(flag) << " (" << flag << ") at t = " << tcur
         << " s, last step " << h << " s";
-    if (worst >= 0) msg << ", largest local error in " << (name ? name(worst) : "component " + std::to_string(worst));
+    if (worst >= 0)
+      msg << ", largest local error in "
+          << (name ? name(worst) : "component " + std::to_string(worst));
     if (!rhs_error.empty()) msg << "; right-hand side: " << rhs_error;
     throw CvodeError(msg.str(), call, flag, tcur, h, worst);
   }
@@ -112,7 +115,8 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
   m.t = t0;
   if (m.n == 0) throw std::invalid_argument("CVODE needs a non-empty state");
   if (!(o.rtol > 0) || o.atol.size() != y0.size())
-    throw std::invalid_argument("CVODE tolerances: rtol must be > 0 and atol must have one entry per component");
+    throw std::invalid_argument(
+        "CVODE tolerances: rtol must be > 0 and atol must have one entry per component");
   for (double a : o.atol)
     if (!(a > 0)) throw std::invalid_argument("CVODE tolerances: every atol must be > 0");
   m.check(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");

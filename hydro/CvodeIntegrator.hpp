@@ -13,19 +13,19 @@
 namespace granwave::hydro {
 
 enum class CvodeMethod {
-  BdfBanded,   // BDF, Newton, banded direct solver with a difference-quotient Jacobian
-  BdfKrylov,   // BDF, Newton-Krylov (GMRES) with a band preconditioner
-  Adams,       // Adams-Moulton, functional (fixed-point) iteration: non-stiff reference
+  BdfBanded,  // BDF, Newton, banded direct solver with a difference-quotient Jacobian
+  BdfKrylov,  // BDF, Newton-Krylov (GMRES) with a band preconditioner
+  Adams,      // Adams-Moulton, functional (fixed-point) iteration: non-stiff reference
 };
 
 struct CvodeOptions {
   CvodeMethod method = CvodeMethod::BdfBanded;
   double rtol = 1e-6;
-  std::vector<double> atol;     // one per component
-  int max_order = 0;            // 0 = method default (BDF 5, Adams 12)
+  std::vector<double> atol;               // one per component
+  int max_order = 0;                      // 0 = method default (BDF 5, Adams 12)
   bool stability_limit_detection = true;  // BDF only (CVodeSetStabLimDet)
-  double max_step = 0;          // s, 0 = no limit
-  long max_steps = 1'000'000;   // per advance() call
+  double max_step = 0;                    // s, 0 = no limit
+  long max_steps = 1'000'000;             // per advance() call
   int band_upper = 0, band_lower = 0;
   std::vector<double> constraints;  // empty = none; else per component 0, 1, 2 (CVODE semantics)
 };
@@ -40,7 +40,12 @@ struct CvodeStats {
 class CvodeError : public std::runtime_error {
  public:
   CvodeError(const std::string& what, std::string call, int flag, double t, double h, int worst)
-      : std::runtime_error(what), call_(std::move(call)), flag_(flag), t_(t), h_(h), worst_(worst) {}
+      : std::runtime_error(what),
+        call_(std::move(call)),
+        flag_(flag),
+        t_(t),
+        h_(h),
+        worst_(worst) {}
   const std::string& call() const { return call_; }
   int flag() const { return flag_; }
   double time() const { return t_; }

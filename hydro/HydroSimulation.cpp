@@ -47,13 +47,15 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
   for (int i = 0; i < N; ++i) {
     const double rho = std::max(U[3 * i], 0.0);
     const double u = rho > pde_.rhoFloor() ? U[3 * i + 1] / rho : 0.0;
-    const double theta = rho > pde_.rhoFloor() ? std::max(U[3 * i + 2] / rho - 0.5 * u * u, 0.0) : 0.0;
+    const double theta =
+        rho > pde_.rhoFloor() ? std::max(U[3 * i + 2] / rho - 0.5 * u * u, 0.0) : 0.0;
     p.n.push_back(rho / m);
     p.u.push_back(u);
     p.theta.push_back(theta);
     p.area_fraction.push_back(rho / m * disk);
-    p.pressure.push_back(pde_.model().pressureAndSoundSpeed(std::max(rho, pde_.rhoFloor()),
-                                                              std::max(theta, pde_.thetaFloor()))
+    p.pressure.push_back(pde_.model()
+                             .pressureAndSoundSpeed(std::max(rho, pde_.rhoFloor()),
+                                                    std::max(theta, pde_.thetaFloor()))
                              .p);
     mz += rho * pde_.cellCentre(i);
     mm += rho;
@@ -95,8 +97,9 @@ HydroResult HydroSimulation::run() {
   std::vector<double> U = initialState();
   HydroResult r;
   for (int i = 0; i < N; ++i) r.initial_mass += U[3 * i] * pde_.dz();
-  CvodeIntegrator cv([this](double t, const double* y, double* yd) { return pde_.rightHandSide(t, y, yd); },
-                     0.0, U, co, [this](int k) { return pde_.componentName(k); });
+  CvodeIntegrator cv(
+      [this](double t, const double* y, double* yd) { return pde_.rightHandSide(t, y, yd); }, 0.0,
+      U, co, [this](int k) { return pde_.componentName(k); });
 
   std::vector<HydroPhase> recent;  // last 2 cycles of phases
   for (int cycle = 0; cycle < opt_.max_cycles; ++cycle) {
@@ -118,7 +121,8 @@ HydroResult HydroSimulation::run() {
     for (int P = 1; P <= 2 && !r.periodic; ++P) {
       double worst = 0;
       for (int k = 0; k < M; ++k)
-        worst = std::max(worst, std::abs(h[end - 1 - k] - h[end - 1 - k - static_cast<std::size_t>(P) * M]));
+        worst = std::max(
+            worst, std::abs(h[end - 1 - k] - h[end - 1 - k - static_cast<std::size_t>(P) * M]));
       if (worst <= opt_.periodic_tolerance * amp) {
         r.periodic = true;
         r.period = P;

@@ -12,32 +12,32 @@
 namespace granwave::hydro {
 
 struct HydroRunOptions {
-  int samples_per_cycle = 100;   // M
+  int samples_per_cycle = 100;  // M
   int min_cycles = 8;
   int max_cycles = 60;
   double periodic_tolerance = 0.02;
-  CvodeOptions cvode;            // tolerances, method; atol and band filled in if empty
+  CvodeOptions cvode;  // tolerances, method; atol and band filled in if empty
   // atol = atol_scale x (rho_cp, rho_cp sqrt(g sigma), rho_cp g sigma) per cell when
   // cvode.atol is empty: per-variable noise levels (physics-hydro.md 5.3).
   double atol_scale = 1e-8;
   bool positivity = true;  // CVODE constraints rho > 0, E > 0
   double initial_area_fraction = 0.5;
-  double initial_theta = 0.01;   // m^2/s^2
+  double initial_theta = 0.01;  // m^2/s^2
 };
 
 // Fields of one recorded phase, plate frame, one value per cell.
 struct HydroPhase {
-  double time = 0;                    // s (absolute)
-  double plate_height = 0;            // z_b(t), m
-  double center_of_mass_height = 0;   // plate frame, m
+  double time = 0;                   // s (absolute)
+  double plate_height = 0;           // z_b(t), m
+  double center_of_mass_height = 0;  // plate frame, m
   std::vector<double> n, u, theta, area_fraction, pressure;
 };
 
 struct HydroResult {
-  int period = 0;                // detected period of the centre of mass (0 = not periodic)
-  int cycles = 0;                // cycles integrated
+  int period = 0;  // detected period of the centre of mass (0 = not periodic)
+  int cycles = 0;  // cycles integrated
   bool periodic = false;
-  std::vector<HydroPhase> window;  // P x M phases of the final window
+  std::vector<HydroPhase> window;     // P x M phases of the final window
   std::vector<double> com_per_phase;  // all cycles, M per cycle, plate frame
   CvodeStats stats;
   double wall_seconds = 0;

@@ -20,8 +20,8 @@ double pairNormalSpeed(Vec2 n, Vec2 v1, Vec2 v2) {
 namespace {
 
 struct ContactImpulse {
-  Vec2 dp;            // impulse on the particle (particle 1 of a pair)
-  double vn = 0;      // approach speed, >= 0 when approaching
+  Vec2 dp;        // impulse on the particle (particle 1 of a pair)
+  double vn = 0;  // approach speed, >= 0 when approaching
   double e_t = -1;
 };
 
@@ -53,8 +53,7 @@ double spinChange(Vec2 n, Vec2 dp, double mass, double diameter) {
 }  // namespace
 
 PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, double mass,
-                                double diameter, double e_n, const TangentialLaw& law,
-                                bool rough) {
+                                double diameter, double e_n, const TangentialLaw& law, bool rough) {
   const double half_d = 0.5 * diameter;
   const double ws = w1 + w2;
   const Vec2 vr{v1.x - v2.x - half_d * ws * n.z, v1.z - v2.z + half_d * ws * n.x};
@@ -71,9 +70,8 @@ PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, 
   return r;
 }
 
-WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass,
-                                double diameter, double e_n, const TangentialLaw& law,
-                                bool rough) {
+WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass, double diameter,
+                                double e_n, const TangentialLaw& law, bool rough) {
   const double half_d = 0.5 * diameter;
   const Vec2 vr{v.x - v_wall.x - half_d * w * n.z, v.z - v_wall.z + half_d * w * n.x};
   const ContactImpulse c = contactImpulse(n, vr, mass, e_n, law, rough);

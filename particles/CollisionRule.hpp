@@ -28,18 +28,17 @@ inline constexpr double kBeta = 2.0 / 7.0;
 double tangentialRestitution(const TangentialLaw& law, double e_n, double vn_abs, double vt_abs);
 
 struct PairCollisionResult {
-  Vec2 v1, v2;        // post-collision velocities
+  Vec2 v1, v2;            // post-collision velocities
   double w1 = 0, w2 = 0;  // post-collision spins (unchanged when friction is 0)
-  Vec2 impulse;       // dp on particle 1, kg m/s
-  double vn = 0;      // |normal relative velocity| at impact, m/s (>= 0 when approaching)
-  double e_t = -1;    // tangential restitution used
+  Vec2 impulse;           // dp on particle 1, kg m/s
+  double vn = 0;          // |normal relative velocity| at impact, m/s (>= 0 when approaching)
+  double e_t = -1;        // tangential restitution used
 };
 
 // e_n already evaluated by the caller (it depends on vn, the law and the TC rule).
 // `rough` = false forces a smooth contact (e_t = -1), as the TC model requires.
 PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, double mass,
-                                double diameter, double e_n, const TangentialLaw& law,
-                                bool rough);
+                                double diameter, double e_n, const TangentialLaw& law, bool rough);
 
 // Normal relative speed of an approaching pair (>= 0), from the same v_r as collidePair.
 double pairNormalSpeed(Vec2 n, Vec2 v1, Vec2 v2);
@@ -48,13 +47,12 @@ struct WallCollisionResult {
   Vec2 v;
   double w = 0;
   Vec2 impulse;
-  double vn = 0;   // |normal velocity relative to the wall| at impact
+  double vn = 0;  // |normal velocity relative to the wall| at impact
   double e_t = -1;
 };
 
 // n points from the wall into the container; v_wall is the wall's velocity.
-WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass,
-                                double diameter, double e_n, const TangentialLaw& law,
-                                bool rough);
+WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass, double diameter,
+                                double e_n, const TangentialLaw& law, bool rough);
 
 }  // namespace granwave

@@ -14,7 +14,8 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
   const double d = cfg_.diameter;
   if (n < 1) throw std::invalid_argument("a simulation needs at least one particle");
   if (cfg_.periodic_z && cfg_.plate.amplitude > 0)
-    throw std::invalid_argument("container.periodic_z needs an undriven scene (drive.frequency = 0)");
+    throw std::invalid_argument(
+        "container.periodic_z needs an undriven scene (drive.frequency = 0)");
 
   // Lab-frame grid covering every height a centre can reach: [-A, L_z + A] with walls,
   // [0, L_z) periodic (coarse-graining.md uses the same extent).

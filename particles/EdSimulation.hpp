@@ -35,9 +35,9 @@ struct EngineConfig {
   Restitution restitution = Restitution::constant(1.0);
   TangentialLaw tangential;
   bool rough_walls = false;
-  double tc = 0;              // s; 0 = TC model off
+  double tc = 0;  // s; 0 = TC model off
   double rest_velocity = 1e-6;
-  double duration = 1;        // s
+  double duration = 1;  // s
   double record_interval = 0.01;
   // Collapse detection: more than `collapse_collisions` collisions of one particle within
   // `collapse_window` seconds.
@@ -112,10 +112,10 @@ class EdSimulation {
   Observables obs_;
   double now_ = 0;
   double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0, ride_curvature_ = 0;
-  double z_floor_ = 0;        // lowest height a centre can reach (grid origin)
+  double z_floor_ = 0;  // lowest height a centre can reach (grid origin)
   std::uint64_t records_ = 0;
   double next_record_ = 0;
-  double virial_ = 0;         // sum of r_ij . dp_i since the last record (pressure)
+  double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)
   double virial_since_ = 0;
   bool rotation_ = false;
 };

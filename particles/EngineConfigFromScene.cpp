@@ -18,8 +18,12 @@ EngineConfig engineConfig(const Scene& scene) {
   c.periodic_z = scene.container.periodic_z;
   c.plate = {dv.amplitude, dv.omega};
   switch (scene.contact.restitution) {
-    case RestitutionKind::Constant: c.restitution = Restitution::constant(scene.contact.e); break;
-    case RestitutionKind::Dry: c.restitution = Restitution::dry(scene.contact.kappa); break;
+    case RestitutionKind::Constant:
+      c.restitution = Restitution::constant(scene.contact.e);
+      break;
+    case RestitutionKind::Dry:
+      c.restitution = Restitution::dry(scene.contact.kappa);
+      break;
     case RestitutionKind::Wet:
       c.restitution = Restitution::wet(scene.contact.e_inf, scene.contact.stokes_critical, dv.q);
       break;
@@ -38,7 +42,8 @@ EngineConfig engineConfig(const Scene& scene) {
   // Collapse: a collision rate per particle far above any physical one. The velocity scale is
   // the largest of plate speed, sqrt(g d) and the thermal speed.
   double v = std::max(dv.v0, std::sqrt(c.gravity * c.diameter));
-  if (scene.initial.temperature) v = std::max(v, std::sqrt(2.0 * *scene.initial.temperature / c.mass));
+  if (scene.initial.temperature)
+    v = std::max(v, std::sqrt(2.0 * *scene.initial.temperature / c.mass));
   c.collapse_window = v > 0 ? 1e-3 * c.diameter / v : 1e-6;
   c.collapse_collisions = 2000;
   return c;

@@ -9,10 +9,10 @@ namespace granwave {
 
 enum class EventKind : std::uint8_t {
   None,
-  Pair,        // partner = other particle
-  Wall,        // partner = WallId
-  CellCross,   // partner = CrossDirection
-  TakeOff,     // a particle riding a wall leaves it
+  Pair,       // partner = other particle
+  Wall,       // partner = WallId
+  CellCross,  // partner = CrossDirection
+  TakeOff,    // a particle riding a wall leaves it
 };
 
 enum WallId : std::int32_t { kBottom = 0, kLid = 1, kLeft = 2, kRight = 3 };

@@ -160,10 +160,10 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const double vn = pairNormalSpeed(n, va, vb);
   // Which partner (if any) is a rider pressing the other: resting contacts attach.
   const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
-  const bool pressed = (a_rides && riderPresses(a, b, {-n.x, -n.z})) ||
-                       (b_rides && riderPresses(b, a, n));
-  const double tol = approachTolerance(std::sqrt(a.vx * a.vx + a.vz * a.vz),
-                                       std::sqrt(b.vx * b.vx + b.vz * b.vz));
+  const bool pressed =
+      (a_rides && riderPresses(a, b, {-n.x, -n.z})) || (b_rides && riderPresses(b, a, n));
+  const double tol =
+      approachTolerance(std::sqrt(a.vx * a.vx + a.vz * a.vz), std::sqrt(b.vx * b.vx + b.vz * b.vz));
   if (!(vn > tol)) {
     if (pressed && -vn <= cfg_.rest_velocity) {
       ++a.counter;
@@ -181,9 +181,8 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const bool elastic = tcElastic(i, j);
   const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
   const double before = particleEnergy(a) + particleEnergy(b);
-  const PairCollisionResult c =
-      collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter, e_n, cfg_.tangential,
-                  rotation_ && !elastic);
+  const PairCollisionResult c = collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter,
+                                            e_n, cfg_.tangential, rotation_ && !elastic);
   a.vx = c.v1.x;
   a.vz = c.v1.z;
   b.vx = c.v2.x;
@@ -256,10 +255,20 @@ void EdSimulation::doWall(int i, WallId wall) {
   ParticleState& s = p_[i];
   Vec2 n, vw;
   switch (wall) {
-    case kBottom: n = {0, 1}; vw = {0, cfg_.plate.velocity(now_)}; break;
-    case kLid: n = {0, -1}; vw = {0, cfg_.plate.velocity(now_)}; break;
-    case kLeft: n = {1, 0}; break;
-    case kRight: n = {-1, 0}; break;
+    case kBottom:
+      n = {0, 1};
+      vw = {0, cfg_.plate.velocity(now_)};
+      break;
+    case kLid:
+      n = {0, -1};
+      vw = {0, cfg_.plate.velocity(now_)};
+      break;
+    case kLeft:
+      n = {1, 0};
+      break;
+    case kRight:
+      n = {-1, 0};
+      break;
   }
   const double approach = -((s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z);  // > 0 approaching
   const bool pushes = wallPushes(wall, now_);
@@ -272,15 +281,16 @@ void EdSimulation::doWall(int i, WallId wall) {
   if (approach > 0.0) {
     const bool elastic = tcElastic(i, -1);
     const double e_n = elastic ? 1.0 : cfg_.restitution(approach);
-    const WallCollisionResult c = collideWall(n, {s.vx, s.vz}, s.omega, vw, cfg_.mass,
-                                              cfg_.diameter, e_n, cfg_.tangential,
-                                              cfg_.rough_walls && rotation_ && !elastic);
+    const WallCollisionResult c =
+        collideWall(n, {s.vx, s.vz}, s.omega, vw, cfg_.mass, cfg_.diameter, e_n, cfg_.tangential,
+                    cfg_.rough_walls && rotation_ && !elastic);
     // Loss in the wall's frame (the wall's own velocity is unchanged by the impact):
     // kinetic energy relative to the wall before minus after.
     const double m = cfg_.mass;
     const double inertia = m * cfg_.diameter * cfg_.diameter / 10.0;
-    const double rel_before = 0.5 * m * ((s.vx - vw.x) * (s.vx - vw.x) + (s.vz - vw.z) * (s.vz - vw.z)) +
-                              0.5 * inertia * s.omega * s.omega;
+    const double rel_before =
+        0.5 * m * ((s.vx - vw.x) * (s.vx - vw.x) + (s.vz - vw.z) * (s.vz - vw.z)) +
+        0.5 * inertia * s.omega * s.omega;
     const double rel_after =
         0.5 * m * ((c.v.x - vw.x) * (c.v.x - vw.x) + (c.v.z - vw.z) * (c.v.z - vw.z)) +
         0.5 * inertia * c.w * c.w;
@@ -302,8 +312,7 @@ void EdSimulation::doWall(int i, WallId wall) {
   if ((wall == kBottom || wall == kLid) && pushes &&
       (separation <= cfg_.rest_velocity || pinched(i, n, rigid, -1))) {
     startRiding(i, wall);
-  } else if (s.motion != Motion::Ballistic &&
-             (s.vz != cfg_.plate.velocity(now_))) {
+  } else if (s.motion != Motion::Ballistic && (s.vz != cfg_.plate.velocity(now_))) {
     s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity
   }
   predict(i);
@@ -337,15 +346,35 @@ void EdSimulation::doCross(int i, CrossDirection dir) {
   const int c = cells_.cellOf(i);
   int cx = cells_.cx(c), cz = cells_.cz(c);
   switch (dir) {
-    case kCrossXPlus: ++cx; break;
-    case kCrossXMinus: --cx; break;
-    case kCrossZPlus: ++cz; break;
-    case kCrossZMinus: --cz; break;
+    case kCrossXPlus:
+      ++cx;
+      break;
+    case kCrossXMinus:
+      --cx;
+      break;
+    case kCrossZPlus:
+      ++cz;
+      break;
+    case kCrossZMinus:
+      --cz;
+      break;
   }
-  if (cx >= g.nx) { cx = 0; s.x -= g.lx(); }
-  if (cx < 0) { cx = g.nx - 1; s.x += g.lx(); }
-  if (cz >= g.nz) { cz = 0; s.z -= g.lz(); }
-  if (cz < 0) { cz = g.nz - 1; s.z += g.lz(); }
+  if (cx >= g.nx) {
+    cx = 0;
+    s.x -= g.lx();
+  }
+  if (cx < 0) {
+    cx = g.nx - 1;
+    s.x += g.lx();
+  }
+  if (cz >= g.nz) {
+    cz = 0;
+    s.z -= g.lz();
+  }
+  if (cz < 0) {
+    cz = g.nz - 1;
+    s.z += g.lz();
+  }
   cells_.remove(i);
   cells_.insert(i, cells_.index(cx, cz));
   predict(i);

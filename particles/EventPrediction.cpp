@@ -12,7 +12,8 @@ namespace granwave {
 
 namespace {
 
-inline void consider(Event& best, double t, EventKind kind, int partner, std::uint32_t counter = 0) {
+inline void consider(Event& best, double t, EventKind kind, int partner,
+                     std::uint32_t counter = 0) {
   if (t < best.time) best = {t, kind, partner, counter};
 }
 
@@ -53,17 +54,20 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
   const int cx = cells_.cx(c), cz = cells_.cz(c);
   const double xlo = cells_.xLow(c), zlo = cells_.zLow(c);
   if (s.vx > 0.0 && (g.periodic_x || cx + 1 < g.nx))
-    consider(best, now_ + std::max(0.0, xlo + g.wx - s.x) / s.vx, EventKind::CellCross, kCrossXPlus);
+    consider(best, now_ + std::max(0.0, xlo + g.wx - s.x) / s.vx, EventKind::CellCross,
+             kCrossXPlus);
   if (s.vx < 0.0 && (g.periodic_x || cx > 0))
     consider(best, now_ + std::max(0.0, s.x - xlo) / -s.vx, EventKind::CellCross, kCrossXMinus);
 
   const bool up_open = g.periodic_z || cz + 1 < g.nz;
   const bool down_open = g.periodic_z || cz > 0;
   if (s.motion == Motion::Ballistic) {
-    if (up_open) consider(best, now_ + riseTime(zlo + g.wz - s.z, s.vz, cfg_.gravity),
-                          EventKind::CellCross, kCrossZPlus);
-    if (down_open) consider(best, now_ + fallTime(s.z - zlo, s.vz, cfg_.gravity),
-                            EventKind::CellCross, kCrossZMinus);
+    if (up_open)
+      consider(best, now_ + riseTime(zlo + g.wz - s.z, s.vz, cfg_.gravity), EventKind::CellCross,
+               kCrossZPlus);
+    if (down_open)
+      consider(best, now_ + fallTime(s.z - zlo, s.vz, cfg_.gravity), EventKind::CellCross,
+               kCrossZMinus);
     return;
   }
   // Riding: the height is the wall's, z(t) = z_b(t) + const; its curvature is bounded by
@@ -72,7 +76,9 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
   const PlateMotion& plate = cfg_.plate;
   if (up_open) {
     const double zhi = zlo + g.wz;
-    auto gap = [&](double t) { return GapRate{zhi - plate.height(t) - offset, -plate.velocity(t)}; };
+    auto gap = [&](double t) {
+      return GapRate{zhi - plate.height(t) - offset, -plate.velocity(t)};
+    };
     consider(best, firstClosingRoot(gap, ride_curvature_, now_, best.time), EventKind::CellCross,
              kCrossZPlus);
   }
@@ -87,8 +93,7 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
   (void)i;
   const double r = 0.5 * cfg_.diameter;
   if (!cfg_.periodic_x) {
-    if (s.vx < 0.0)
-      consider(best, now_ + std::max(0.0, s.x - r) / -s.vx, EventKind::Wall, kLeft);
+    if (s.vx < 0.0) consider(best, now_ + std::max(0.0, s.x - r) / -s.vx, EventKind::Wall, kLeft);
     if (s.vx > 0.0)
       consider(best, now_ + std::max(0.0, cfg_.width - r - s.x) / s.vx, EventKind::Wall, kRight);
   }
@@ -102,7 +107,8 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
     const double aw2 = plate.maxAcceleration();
     if (aw2 <= g || plate.omega <= 0.0) return;  // the bottom holds forever, the lid never
     const double phi_star = std::asin(g / aw2);
-    const double phi_leave = s.motion == Motion::RideBottom ? phi_star : std::numbers::pi - phi_star;
+    const double phi_leave =
+        s.motion == Motion::RideBottom ? phi_star : std::numbers::pi - phi_star;
     const double two_pi = 2.0 * std::numbers::pi;
     const double phase = plate.omega * now_;
     double k = std::ceil((phase - phi_leave) / two_pi);
@@ -176,8 +182,8 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
       const double rx = s.x - (q.x + q.vx * dt) - nb[c].shift_x;
       const double rz = s.z - oz - nb[c].shift_z;
       const double vx = s.vx - q.vx, vz = s.vz - ovz;
-      const bool linear = s.motion == q.motion || (s.motion != Motion::Ballistic &&
-                                                   q.motion != Motion::Ballistic);
+      const bool linear =
+          s.motion == q.motion || (s.motion != Motion::Ballistic && q.motion != Motion::Ballistic);
       if (linear && s.motion == q.motion && s.motion != Motion::Ballistic) {
         // Both carried by the same wall: they can only meet horizontally.
         const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));

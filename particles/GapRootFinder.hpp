@@ -22,9 +22,9 @@ struct GapRate {
 };
 
 struct GapRootOptions {
-  double tolerance = 1e-13;  // m: the gap counts as closed below this
+  double tolerance = 1e-13;   // m: the gap counts as closed below this
   double rate_tolerance = 0;  // m/s: closing slower than this is round-off, not a collision
-  int max_steps = 10000;     // safety net; hitting it means the horizon is far too long
+  int max_steps = 10000;      // safety net; hitting it means the horizon is far too long
 };
 
 // `first` is gap(t0), when the caller already has it (saves an evaluation of the gap,
@@ -41,8 +41,8 @@ double firstClosingRoot(const Gap& gap, double curvature_bound, double t0, doubl
       if (g.rate < -opt.rate_tolerance) return t;
       // Touching and opening (or stationary): step past the contact. The parabola through
       // h = 0 with rate r returns to zero after 2r/H; never less than the time to cover tol.
-      const double s = H > 0 ? std::max(2.0 * g.rate / H, std::sqrt(2.0 * opt.tolerance / H))
-                             : kNever;
+      const double s =
+          H > 0 ? std::max(2.0 * g.rate / H, std::sqrt(2.0 * opt.tolerance / H)) : kNever;
       t += s;
       continue;
     }

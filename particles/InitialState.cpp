@@ -15,7 +15,8 @@ namespace {
 void placeRandomly(InitialCondition& ic, int n, const EngineConfig& c, std::mt19937_64& rng) {
   const double d = c.diameter;
   const double xlo = c.periodic_x ? 0.0 : 0.5 * d, xhi = c.periodic_x ? c.width : c.width - 0.5 * d;
-  const double zlo = c.periodic_z ? 0.0 : 0.5 * d, zhi = c.periodic_z ? c.height : c.height - 0.5 * d;
+  const double zlo = c.periodic_z ? 0.0 : 0.5 * d,
+               zhi = c.periodic_z ? c.height : c.height - 0.5 * d;
   std::uniform_real_distribution<double> ux(xlo, xhi), uz(zlo, zhi);
   // Hash grid of side d: any overlapping pair sits in neighbouring buckets.
   const int nbx = std::max(1, static_cast<int>(c.width / d));
@@ -75,7 +76,8 @@ void placeOnLattice(InitialCondition& ic, int n, const EngineConfig& c) {
     if (ax < d || az < d)
       throw std::invalid_argument(fmt::format(
           "initial.placement = \"lattice\": {} particles do not fit on a square lattice in the "
-          "periodic box (spacing {:.4g} x {:.4g} m < d)", n, ax, az));
+          "periodic box (spacing {:.4g} x {:.4g} m < d)",
+          n, ax, az));
     for (int i = 0; i < n; ++i) {
       ic.x.push_back((i % cols + 0.5) * ax);
       ic.z.push_back((i / cols + 0.5) * az);

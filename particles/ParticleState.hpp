@@ -12,14 +12,14 @@ enum class Motion : std::uint8_t { Ballistic, RideBottom, RideLid };
 
 struct ParticleState {
   // Hot: read for every neighbour in every prediction (first 64-byte line).
-  double x = 0, z = 0;    // m
-  double vx = 0, vz = 0;  // m/s
-  double t = 0;           // s, time of the stored position/velocity
-  double ride_offset = 0;  // m, z - z_b(t) while riding (rigidly carried by the wall)
-  std::uint32_t counter = 0;       // collisions and motion changes, for lazy invalidation
+  double x = 0, z = 0;        // m
+  double vx = 0, vz = 0;      // m/s
+  double t = 0;               // s, time of the stored position/velocity
+  double ride_offset = 0;     // m, z - z_b(t) while riding (rigidly carried by the wall)
+  std::uint32_t counter = 0;  // collisions and motion changes, for lazy invalidation
   Motion motion = Motion::Ballistic;
   // Cold: only at this particle's own collisions.
-  double omega = 0;       // rad/s about y
+  double omega = 0;                // rad/s about y
   double last_collision = -1e300;  // s, for the TC model
   double burst_start = -1e300;     // collapse detection window
   std::uint32_t burst = 0;         // collisions in the current window

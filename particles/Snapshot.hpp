@@ -8,10 +8,10 @@
 namespace granwave {
 
 struct CollisionCounts {
-  std::uint64_t pair = 0;         // particle-particle collisions
-  std::uint64_t wall = 0;         // particle-wall collisions (bottom, lid, sides)
-  std::uint64_t tc_elastic = 0;   // of these, made elastic by the TC model
-  std::uint64_t rests = 0;        // wall contacts that ended at rest on the wall (riding)
+  std::uint64_t pair = 0;        // particle-particle collisions
+  std::uint64_t wall = 0;        // particle-wall collisions (bottom, lid, sides)
+  std::uint64_t tc_elastic = 0;  // of these, made elastic by the TC model
+  std::uint64_t rests = 0;       // wall contacts that ended at rest on the wall (riding)
 };
 
 struct Observables {
@@ -23,7 +23,7 @@ struct Observables {
   double wall_work = 0;              // J, cumulative work done by moving walls
   double pressure = 0;               // Pa m (2D), collisional+kinetic, periodic boxes only
   CollisionCounts collisions;
-  std::uint64_t events = 0;          // all processed events (collisions, crossings, ...)
+  std::uint64_t events = 0;  // all processed events (collisions, crossings, ...)
 };
 
 struct Snapshot {

@@ -1,8 +1,9 @@
 #pragma once
 // The scene: every user-facing parameter of a granwave run, in SI units, with the paper's
 // values as defaults (K. Huang, "Internal and surface waves in vibrofluidized granular
-// materials: role of cohesion", Methods and Table I). Parsing and validation live in SceneParser; the derived
-// quantities (A, v0, T0, t_c, q, v_c) in SceneDerived. No physics beyond those formulas here.
+// materials: role of cohesion", Methods and Table I). Parsing and validation live in SceneParser;
+// the derived quantities (A, v0, T0, t_c, q, v_c) in SceneDerived. No physics beyond those formulas
+// here.
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -16,21 +17,21 @@ enum class HydroTransport { JenkinsRichman, GarzoDufty };
 
 struct ParticlesSpec {
   int count = 300;
-  double diameter = 0.002;        // m
-  double density = 2580.0;        // kg/m^3
-  double youngs_modulus = 63e9;   // Pa
+  double diameter = 0.002;       // m
+  double density = 2580.0;       // kg/m^3
+  double youngs_modulus = 63e9;  // Pa
   double poisson_ratio = 0.22;
 };
 
 struct ContainerSpec {
-  double width = 0.06;            // m (30 d)
-  double height = 0.06;           // m (30 d)
+  double width = 0.06;   // m (30 d)
+  double height = 0.06;  // m (30 d)
   bool periodic_x = false;
-  bool periodic_z = false;        // only without drive
+  bool periodic_z = false;  // only without drive
 };
 
 struct DriveSpec {
-  double frequency = 10.0;        // Hz; 0 = no drive
+  double frequency = 10.0;  // Hz; 0 = no drive
   // Exactly one of gamma / amplitude is given; the other is derived.
   std::optional<double> gamma = 4.0;
   std::optional<double> amplitude;  // m
@@ -49,10 +50,10 @@ struct ContactSpec {
   // "Set to 1" in the paper (walls, TC collisions) read as e_t = -1 (tangential relative
   // velocity unchanged) in Luding's convention: see docs/physics.md.
   bool tc_enabled = true;
-  std::optional<double> tc_time;   // s; empty = paper's formula ("auto")
+  std::optional<double> tc_time;  // s; empty = paper's formula ("auto")
   // Below this separation speed after a wall collision, a particle pressed on by the wall
   // rests on (rides) it until the wall's acceleration falls below -g. See docs/physics.md.
-  double rest_velocity = 1e-6;     // m/s
+  double rest_velocity = 1e-6;  // m/s
 };
 
 struct InitialSpec {
@@ -61,12 +62,12 @@ struct InitialSpec {
 };
 
 struct RunSpec {
-  double duration = 15.0;          // s
-  int phases_per_cycle = 100;      // M, driven scenes
-  double record_interval = 0.0;    // s, undriven scenes (0 = duration / 100)
-  int trajectory_stride = 1;       // write positions every k-th record
+  double duration = 15.0;        // s
+  int phases_per_cycle = 100;    // M, driven scenes
+  double record_interval = 0.0;  // s, undriven scenes (0 = duration / 100)
+  int trajectory_stride = 1;     // write positions every k-th record
   std::uint64_t seed = 1;
-  double gravity = 9.81;           // m/s^2, magnitude (points along -z)
+  double gravity = 9.81;  // m/s^2, magnitude (points along -z)
 };
 
 struct HydroSpec {

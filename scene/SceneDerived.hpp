@@ -9,17 +9,17 @@
 namespace granwave {
 
 struct SceneDerived {
-  double mass = 0;          // kg
-  double inertia = 0;       // kg m^2
-  double omega = 0;         // rad/s, 2 pi f (0 without drive)
-  double amplitude = 0;     // m, A
-  double gamma = 0;         // peak plate acceleration / g
-  double v0 = 0;            // m/s, peak plate velocity
-  double T0 = 0;            // J, m v0^2 / 2
-  double hertz_k = 0;       // Pa m^(1/2), k of the TC formula
-  double tc = 0;            // s, TC time actually used (0 when TC is off)
-  double q = 0;             // s/m, Stokes-number factor
-  double v_c = 0;           // m/s, wet onset velocity
+  double mass = 0;       // kg
+  double inertia = 0;    // kg m^2
+  double omega = 0;      // rad/s, 2 pi f (0 without drive)
+  double amplitude = 0;  // m, A
+  double gamma = 0;      // peak plate acceleration / g
+  double v0 = 0;         // m/s, peak plate velocity
+  double T0 = 0;         // J, m v0^2 / 2
+  double hertz_k = 0;    // Pa m^(1/2), k of the TC formula
+  double tc = 0;         // s, TC time actually used (0 when TC is off)
+  double q = 0;          // s/m, Stokes-number factor
+  double v_c = 0;        // m/s, wet onset velocity
   bool driven = false;
 };
 

@@ -1,8 +1,8 @@
 #include "studies/FieldsCommand.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <filesystem>
 #include <stdexcept>
 
@@ -24,19 +24,21 @@ int parseChoice(const std::string& value, const char* option, int lo, int hi) {
     if (used == value.size() && v >= lo && v <= hi) return v;
   } catch (const std::exception&) {
   }
-  throw CLI::ValidationError(option, fmt::format("'{}' is not auto or a whole number in [{}, {}]",
-                                                 value, lo, hi));
+  throw CLI::ValidationError(
+      option, fmt::format("'{}' is not auto or a whole number in [{}, {}]", value, lo, hi));
 }
 }  // namespace
 
 void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
-  CLI::App* cmd = app.add_subcommand("fields", "Phase-averaged fields, profiles and wave fronts of a run");
+  CLI::App* cmd =
+      app.add_subcommand("fields", "Phase-averaged fields, profiles and wave fronts of a run");
   cmd->add_option("run", opt.run_path, "Run file written by granwave simulate (every record)")
       ->required()
       ->check(CLI::ExistingFile);
   cmd->add_option("-o,--output", opt.output, "Fields file (HDF5 + .xdmf); default <run>.fields.h5");
-  cmd->add_option("--period", opt.period,
-                  "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4");
+  cmd->add_option(
+      "--period", opt.period,
+      "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4");
   cmd->add_option("--blocks", opt.blocks, "Independent blocks of cycles for uncertainties")
       ->check(CLI::Range(2, 50));
   cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number");
@@ -66,7 +68,8 @@ int runFields(const FieldsOptions& opt) {
   if (discard < 0) {
     discard = steadyCycles(com, M);
     if (discard < 0)
-      throw std::runtime_error(opt.run_path + ": the layer never became steady (run longer, or give --discard)");
+      throw std::runtime_error(opt.run_path +
+                               ": the layer never became steady (run longer, or give --discard)");
   }
   int layer_period = 0;
   try {
@@ -93,7 +96,8 @@ int runFields(const FieldsOptions& opt) {
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.particles.diameter,
                                 scene.container.periodic_x);
   std::string out = opt.output;
-  if (out.empty()) out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
+  if (out.empty())
+    out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);

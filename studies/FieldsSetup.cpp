@@ -54,9 +54,10 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
   if (impact_fronts == 0)
     r += "fronts          none after an impact with T~_g/T0 > threshold over 3 or more phases\n";
   if (static_cast<int>(a.fronts.size()) > impact_fronts)
-    r += fmt::format("hot spots       {} episode(s) of T~_g/T0 > threshold away from the plate "
-                     "(not impact fronts; in the file with from_impact = 0)\n",
-                     a.fronts.size() - impact_fronts);
+    r += fmt::format(
+        "hot spots       {} episode(s) of T~_g/T0 > threshold away from the plate "
+        "(not impact fronts; in the file with from_impact = 0)\n",
+        a.fronts.size() - impact_fronts);
   if (a.patterns.available) {
     const PatternResult& p = a.patterns;
     r += fmt::format(

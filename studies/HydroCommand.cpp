@@ -1,8 +1,8 @@
 #include "studies/HydroCommand.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -66,9 +66,11 @@ void addHydroCommand(CLI::App& app, HydroOptions& opt) {
 int runHydro(const HydroOptions& opt) {
   const Scene scene = parseSceneFile(opt.scene_path, opt.overrides);
   if (scene.drive.frequency <= 0)
-    throw std::runtime_error(opt.scene_path + ": granwave hydro needs a driven scene (drive.frequency > 0)");
+    throw std::runtime_error(opt.scene_path +
+                             ": granwave hydro needs a driven scene (drive.frequency > 0)");
   if (scene.container.periodic_z)
-    throw std::runtime_error(opt.scene_path + ": granwave hydro needs bottom and lid (container.periodic_z = false)");
+    throw std::runtime_error(
+        opt.scene_path + ": granwave hydro needs bottom and lid (container.periodic_z = false)");
   const SceneDerived dv = derive(scene);
   const double d = scene.particles.diameter;
 
@@ -90,16 +92,18 @@ int runHydro(const HydroOptions& opt) {
   const hydro::GranularHydro1D pde(geom, model);
   hydro::HydroRunOptions ro;
   ro.samples_per_cycle = scene.run.phases_per_cycle;
-  ro.max_cycles = std::max(8, static_cast<int>(std::floor(scene.run.duration * scene.drive.frequency)));
+  ro.max_cycles =
+      std::max(8, static_cast<int>(std::floor(scene.run.duration * scene.drive.frequency)));
   ro.cvode.rtol = scene.hydro.rtol;
   ro.atol_scale = scene.hydro.atol;
   hydro::HydroSimulation sim(pde, scene.particles.count, scene.container.width, ro);
-  if (!opt.quiet) fmt::print(stderr, "  integrating up to {} cycles ({} cells)...\n", ro.max_cycles, geom.cells);
+  if (!opt.quiet)
+    fmt::print(stderr, "  integrating up to {} cycles ({} cells)...\n", ro.max_cycles, geom.cells);
   const hydro::HydroResult r = sim.run();
 
   // Lab-frame profiles on the coarse-graining grid, and the same fronts as `fields`.
-  const FieldGrid grid = FieldGrid::forContainer(scene.container.width, scene.container.height,
-                                                 dv.amplitude, d);
+  const FieldGrid grid =
+      FieldGrid::forContainer(scene.container.width, scene.container.height, dv.amplitude, d);
   PhaseFields lab;
   lab.phases = static_cast<int>(r.window.size());
   lab.nz = grid.nz;
@@ -111,11 +115,13 @@ int runHydro(const HydroOptions& opt) {
              lab.profile_temperature, lab.profile_velocity_z);
     plate.push_back(ph.plate_height);
     com_lab.push_back(ph.center_of_mass_height + ph.plate_height);
-    times.push_back(ph.time - r.window.front().time + 1.0 / (ro.samples_per_cycle * scene.drive.frequency));
+    times.push_back(ph.time - r.window.front().time +
+                    1.0 / (ro.samples_per_cycle * scene.drive.frequency));
   }
   lab.profile_rms_velocity_x.assign(lab.profile_temperature.size(), kNaN);
-  const std::vector<FrontEpisode> fronts = frontEpisodes(
-      lab, {}, grid.z0, grid.wz, dv.T0, 1.0 / (ro.samples_per_cycle * scene.drive.frequency), {}, plate);
+  const std::vector<FrontEpisode> fronts =
+      frontEpisodes(lab, {}, grid.z0, grid.wz, dv.T0,
+                    1.0 / (ro.samples_per_cycle * scene.drive.frequency), {}, plate);
 
   std::string out = opt.output;
   if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".hydro.h5";
@@ -184,27 +190,32 @@ int runHydro(const HydroOptions& opt) {
   }
 
   fmt::print("scene           {}\n", opt.scene_path);
-  fmt::print("hydro           {} cells, {} transport, restitution {}, rtol {:g}\n", geom.cells,
-             scene.hydro.transport == HydroTransport::GarzoDufty ? "Garzo-Dufty" : "Jenkins-Richman",
-             scene.hydro.restitution_model == HydroRestitutionModel::Constant
-                                    ? "constant" : "velocity-dependent (Maxwell-averaged)",
-             ro.cvode.rtol);
+  fmt::print(
+      "hydro           {} cells, {} transport, restitution {}, rtol {:g}\n", geom.cells,
+      scene.hydro.transport == HydroTransport::GarzoDufty ? "Garzo-Dufty" : "Jenkins-Richman",
+      scene.hydro.restitution_model == HydroRestitutionModel::Constant
+          ? "constant"
+          : "velocity-dependent (Maxwell-averaged)",
+      ro.cvode.rtol);
   fmt::print("periodic state  {} after {} cycles; centre-of-mass period {}\n",
              r.periodic ? "reached" : "NOT reached", r.cycles,
              r.periodic ? fmt::format("{}T", r.period) : std::string("unknown"));
-  fmt::print("cost            {:.2f} s wall ({:.3f} s per cycle), {} steps, {} RHS evaluations, "
-             "{} Jacobians, {} error-test and {} nonlinear failures\n",
-             r.wall_seconds, r.wall_seconds / r.cycles, r.stats.steps,
-             r.stats.rhs_evals + r.stats.lin_rhs_evals, r.stats.jac_evals, r.stats.err_test_fails,
-             r.stats.nonlin_conv_fails);
+  fmt::print(
+      "cost            {:.2f} s wall ({:.3f} s per cycle), {} steps, {} RHS evaluations, "
+      "{} Jacobians, {} error-test and {} nonlinear failures\n",
+      r.wall_seconds, r.wall_seconds / r.cycles, r.stats.steps,
+      r.stats.rhs_evals + r.stats.lin_rhs_evals, r.stats.jac_evals, r.stats.err_test_fails,
+      r.stats.nonlin_conv_fails);
   fmt::print("mass            {:.9g} -> {:.9g} kg/m (relative change {:.1e})\n", r.initial_mass,
              r.final_mass, std::abs(r.final_mass / r.initial_mass - 1));
   for (const FrontEpisode& e : fronts) {
     if (!e.from_impact) continue;
-    fmt::print("front           t/T {:.2f}..{:.2f}: {:.2f} +- {:.2f} m/s (lab, fit error); peak T/T0 {:.2f}\n",
-               static_cast<double>(e.first_phase) / ro.samples_per_cycle,
-               static_cast<double>(e.last_phase) / ro.samples_per_cycle, e.speed, e.fit_error,
-               e.peak_temperature);
+    fmt::print(
+        "front           t/T {:.2f}..{:.2f}: {:.2f} +- {:.2f} m/s (lab, fit error); peak T/T0 "
+        "{:.2f}\n",
+        static_cast<double>(e.first_phase) / ro.samples_per_cycle,
+        static_cast<double>(e.last_phase) / ro.samples_per_cycle, e.speed, e.fit_error,
+        e.peak_temperature);
   }
   fmt::print("output          {}\n", out);
   return 0;

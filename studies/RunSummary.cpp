@@ -12,9 +12,12 @@ namespace granwave {
 namespace {
 const char* lawName(RestitutionKind k) {
   switch (k) {
-    case RestitutionKind::Constant: return "constant";
-    case RestitutionKind::Dry: return "dry";
-    case RestitutionKind::Wet: return "wet";
+    case RestitutionKind::Constant:
+      return "constant";
+    case RestitutionKind::Dry:
+      return "dry";
+    case RestitutionKind::Wet:
+      return "wet";
   }
   return "?";
 }
@@ -44,15 +47,18 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
   if (s.contact.restitution == RestitutionKind::Wet)
     r += fmt::format(" (e_inf = {:g}, St_c = {:g}, v_c = {:.4g} m/s)", s.contact.e_inf,
                      s.contact.stokes_critical, dv.v_c);
-  if (s.contact.restitution == RestitutionKind::Dry) r += fmt::format(" (kappa = {:g})", s.contact.kappa);
-  if (s.contact.restitution == RestitutionKind::Constant) r += fmt::format(" (e = {:g})", s.contact.e);
+  if (s.contact.restitution == RestitutionKind::Dry)
+    r += fmt::format(" (kappa = {:g})", s.contact.kappa);
+  if (s.contact.restitution == RestitutionKind::Constant)
+    r += fmt::format(" (e = {:g})", s.contact.e);
   r += fmt::format(", mu = {:g}\n", s.contact.friction);
   if (dv.driven)
     r += fmt::format("drive           f = {:g} Hz, Gamma = {:.4g}, A = {:.4g} m, v0 = {:.4g} m/s\n",
                      s.drive.frequency, dv.gamma, dv.amplitude, dv.v0);
   r += fmt::format("TC model        {}\n",
                    in.tc > 0 ? fmt::format("t_c = {:.3g} s", in.tc) : std::string("off"));
-  r += fmt::format("simulated       {:.4g} s{}\n", in.simulated, in.completed ? "" : " (interrupted)");
+  r += fmt::format("simulated       {:.4g} s{}\n", in.simulated,
+                   in.completed ? "" : " (interrupted)");
   if (include_timing) {
     r += fmt::format("wall time       {:.3f} s  ({:.3g} simulated s per wall s)\n", in.wall,
                      in.simulated / std::max(in.wall, 1e-9));
@@ -64,8 +70,9 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
   r += fmt::format("collisions      pair {}, wall {}, made elastic by TC {}, came to rest {}\n",
                    o.collisions.pair, o.collisions.wall, o.collisions.tc_elastic,
                    o.collisions.rests);
-  r += fmt::format("energy          dissipated {:.4g} J, work by walls {:.4g} J, balance error {:.2g} J\n",
-                   o.dissipated_energy, o.wall_work, in.energy_balance_error);
+  r += fmt::format(
+      "energy          dissipated {:.4g} J, work by walls {:.4g} J, balance error {:.2g} J\n",
+      o.dissipated_energy, o.wall_work, in.energy_balance_error);
   PeriodResult p;
   int discarded = 0;
   if (summarisePeriod(in, p, discarded)) {

@@ -12,12 +12,12 @@ namespace granwave {
 struct RunSummaryInput {
   const Scene* scene = nullptr;
   std::string scene_name;
-  Observables final_obs;       // counters at the end
-  double simulated = 0;        // s
-  double wall = 0;             // s
-  double tc = 0;               // s
+  Observables final_obs;  // counters at the end
+  double simulated = 0;   // s
+  double wall = 0;        // s
+  double tc = 0;          // s
   bool completed = true;
-  std::vector<double> com_height;  // one per record (driven: M per cycle)
+  std::vector<double> com_height;   // one per record (driven: M per cycle)
   double energy_balance_error = 0;  // J, |E - E0 - W + D|
   double initial_energy = 0;
 };

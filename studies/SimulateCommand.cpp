@@ -1,8 +1,8 @@
 #include "studies/SimulateCommand.hpp"
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -121,7 +121,8 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   fmt::print("{}", summary);
   if (!status.completed) {
     fmt::print(stderr, "granwave: interrupted at t = {:.4f} s; partial run saved as {}\n",
-               status.time, opt.no_output ? std::string("(nothing: --no-output)") : out + ".interrupted");
+               status.time,
+               opt.no_output ? std::string("(nothing: --no-output)") : out + ".interrupted");
     return 130;
   }
   if (writer) fmt::print("output          {}\n", out);
@@ -129,8 +130,8 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
     PeriodResult period;
     int discarded = 0;
     const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
-    FieldsAnalysis a = analyseFields(
-        *averager, fieldsContext(scene, "live: " + opt.scene_path, sceneToToml(scene), layer_period));
+    FieldsAnalysis a = analyseFields(*averager, fieldsContext(scene, "live: " + opt.scene_path,
+                                                              sceneToToml(scene), layer_period));
     a.patterns = classifyPatterns(*patterns, scene.container.width, scene.particles.diameter,
                                   scene.container.periodic_x);
     writeFieldsFile(opt.fields, a);

@@ -14,7 +14,7 @@ struct SimulateOptions {
   std::string scene_path;
   std::string output;  // default: <scene stem>.h5 in the working directory
   std::vector<std::string> overrides;
-  bool quiet = false;  // no progress line
+  bool quiet = false;      // no progress line
   bool no_output = false;  // run and summarise only
   std::string fields;      // live phase-averaged fields file (empty = none)
   int fields_period = 2;   // cycles per phase window

@@ -1,22 +1,23 @@
 // granwave: when does a continuum description of a vibrated granular layer agree with the
 // particles? One program, subcommands; errors are reported once, here, in one line.
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <exception>
 #include <string>
 
 #include "h5/H5Error.hpp"
+#include "hydro/CvodeIntegrator.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
-#include "hydro/CvodeIntegrator.hpp"
 #include "studies/FieldsCommand.hpp"
 #include "studies/HydroCommand.hpp"
 #include "studies/SimulateCommand.hpp"
 #include "studies/Version.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
+  CLI::App app{
+      "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
   app.set_version_flag("--version", std::string("granwave ") + granwave::kVersion);
   app.require_subcommand(1);
   granwave::SimulateOptions simulate;

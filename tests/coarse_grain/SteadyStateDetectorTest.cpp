@@ -15,7 +15,8 @@ TEST(SteadyStateDetector, DetectsTheEndOfAnExponentialTransient) {
   std::mt19937_64 rng(5);
   std::normal_distribution<double> noise(0.0, 1e-3);
   SteadyStateDetector det;
-  for (int c = 0; c < 100 && !det.steady(); ++c) det.addCycle(1.0 + std::exp(-c / 4.0) + noise(rng));
+  for (int c = 0; c < 100 && !det.steady(); ++c)
+    det.addCycle(1.0 + std::exp(-c / 4.0) + noise(rng));
   ASSERT_TRUE(det.steady());
   EXPECT_GE(det.steadyFrom(), 15);
   EXPECT_LE(det.steadyFrom(), 35);

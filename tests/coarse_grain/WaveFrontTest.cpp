@@ -49,7 +49,7 @@ FieldsAnalysis analyse(const Synthetic& sp, int cycles, std::uint64_t seed) {
         for (int i = 0; i < c.grid.nx; ++i) {
           for (int k = 0; k < 2; ++k) {
             s.x.push_back((i + in(rng)) * kD);
-            s.z.push_back(zc + (in(rng) - 0.5) * kD);
+            s.z.push_back(zc + (in(rng)-0.5) * kD);
             s.vx.push_back(unit(rng) * std::sqrt(T / kMass));
             s.vz.push_back(drift + unit(rng) * std::sqrt(T / kMass));
             s.omega.push_back(0);

@@ -69,8 +69,9 @@ double pdeTheta(const RestitutionClosure& law, double theta0, double t) {
   o.rtol = 1e-9;
   o.atol.assign(U.size(), 1e-16);
   o.band_upper = o.band_lower = GranularHydro1D::kHalfBand;
-  CvodeIntegrator cv([&pde](double tt, const double* y, double* d) { return pde.rightHandSide(tt, y, d); },
-                     0.0, U, o);
+  CvodeIntegrator cv(
+      [&pde](double tt, const double* y, double* d) { return pde.rightHandSide(tt, y, d); }, 0.0, U,
+      o);
   cv.advanceTo(t);
   return cv.state()[3 * 10 + 2] / cv.state()[3 * 10];
 }
@@ -102,7 +103,7 @@ TEST(HydroCooling, WetGasCoolsWithTheErfcClosureAndEndsCompletelyInelastic) {
   const double th = pdeTheta(wet, theta0, 3.0);
   ASSERT_GT(v_c / std::sqrt(4 * th), 3.0);
   const double rate = (pdeTheta(wet, theta0, 3.05) - pdeTheta(wet, theta0, 2.95)) / 0.1;
-  const double haff_e0 = -(4 / std::sqrt(std::numbers::pi)) * kNu * pairCorrelation(kNu) *
-                         std::pow(th, 1.5) / kD;
+  const double haff_e0 =
+      -(4 / std::sqrt(std::numbers::pi)) * kNu * pairCorrelation(kNu) * std::pow(th, 1.5) / kD;
   EXPECT_NEAR(rate / haff_e0, 1.0, 2e-3);
 }

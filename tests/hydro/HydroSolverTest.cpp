@@ -41,8 +41,9 @@ CvodeIntegrator integrator(const GranularHydro1D& pde, const std::vector<double>
   o.rtol = rtol;
   o.atol.assign(U.size(), 1e-14);
   o.band_upper = o.band_lower = GranularHydro1D::kHalfBand;
-  return CvodeIntegrator([&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); },
-                         0.0, U, o);
+  return CvodeIntegrator(
+      [&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); }, 0.0, U,
+      o);
 }
 }  // namespace
 
@@ -56,10 +57,12 @@ TEST(HydroSolver, UniformGasCoolsByHaffsLaw) {
   g.height = 30 * kD;
   g.gravity = 0;
   const double e = 0.9, nu = 0.3, theta0 = 0.1;
-  const GranularHydro1D pde(g, model(RestitutionClosure::constant(e), RestitutionClosure::constant(1.0)));
+  const GranularHydro1D pde(
+      g, model(RestitutionClosure::constant(e), RestitutionClosure::constant(1.0)));
   CvodeIntegrator cv = integrator(pde, uniform(pde, nu, theta0), 1e-8);
   const double n = nu / (std::numbers::pi * kD * kD / 4);
-  const double zeta0 = std::sqrt(std::numbers::pi) * (1 - e * e) * pairCorrelation(nu) * n * kD * std::sqrt(theta0);
+  const double zeta0 =
+      std::sqrt(std::numbers::pi) * (1 - e * e) * pairCorrelation(nu) * n * kD * std::sqrt(theta0);
   const double tau = 2 / zeta0;
   for (double s : {0.5, 1.0, 3.0}) {
     cv.advanceTo(s * tau);
@@ -100,7 +103,8 @@ TEST(HydroSolver, ElasticGasUnderGravitySettlesToHydrostaticBalance) {
   HydroGeometry g;
   g.cells = 60;
   g.height = 20 * kD;
-  const GranularHydro1D pde(g, model(RestitutionClosure::constant(1.0), RestitutionClosure::constant(1.0)));
+  const GranularHydro1D pde(
+      g, model(RestitutionClosure::constant(1.0), RestitutionClosure::constant(1.0)));
   CvodeIntegrator cv = integrator(pde, uniform(pde, 0.1, 0.05), 1e-7);
   cv.advanceTo(3.0);
   const std::vector<double>& U = cv.state();
@@ -112,7 +116,9 @@ TEST(HydroSolver, ElasticGasUnderGravitySettlesToHydrostaticBalance) {
     const double th = U[3 * i + 2] / rho;
     theta_min = std::min(theta_min, th);
     theta_max = std::max(theta_max, th);
-    auto p = [&](int k) { return pde.model().pressureAndSoundSpeed(U[3 * k], U[3 * k + 2] / U[3 * k]).p; };
+    auto p = [&](int k) {
+      return pde.model().pressureAndSoundSpeed(U[3 * k], U[3 * k + 2] / U[3 * k]).p;
+    };
     const double residual = (p(i + 1) - p(i - 1)) / (2 * h) + rho * g.gravity;
     worst = std::max(worst, std::abs(residual) / (rho * g.gravity));
     EXPECT_LT(std::abs(U[3 * i + 1] / rho), 1e-4);  // at rest
@@ -129,11 +135,13 @@ TEST(HydroSolver, ClosedElasticSystemConservesTotalEnergy) {
   HydroGeometry g;
   g.cells = 60;
   g.height = 20 * kD;
-  const GranularHydro1D pde(g, model(RestitutionClosure::constant(1.0), RestitutionClosure::constant(1.0)));
+  const GranularHydro1D pde(
+      g, model(RestitutionClosure::constant(1.0), RestitutionClosure::constant(1.0)));
   const std::vector<double> U0 = uniform(pde, 0.1, 0.05);
   auto energy = [&](const std::vector<double>& U) {
     double e = 0;
-    for (int i = 0; i < g.cells; ++i) e += (U[3 * i + 2] + U[3 * i] * g.gravity * pde.cellCentre(i)) * pde.dz();
+    for (int i = 0; i < g.cells; ++i)
+      e += (U[3 * i + 2] + U[3 * i] * g.gravity * pde.cellCentre(i)) * pde.dz();
     return e;
   };
   CvodeIntegrator cv = integrator(pde, U0, 1e-8);
@@ -145,7 +153,10 @@ TEST(CvodeIntegrator, BadTolerancesAreRejectedBeforeIntegrating) {
   CvodeOptions o;
   o.rtol = -1;
   o.atol = {1e-8};
-  auto f = [](double, const double*, double* d) { d[0] = 0; return 0; };
+  auto f = [](double, const double*, double* d) {
+    d[0] = 0;
+    return 0;
+  };
   EXPECT_THROW(CvodeIntegrator(f, 0, {1.0}, o), std::invalid_argument);
   o.rtol = 1e-6;
   o.atol = {0.0};

@@ -43,8 +43,9 @@ CvodeIntegrator integrate(const GranularHydro1D& pde, const std::vector<double>&
   o.rtol = 1e-6;
   o.atol.assign(U.size(), 1e-12);
   o.band_upper = o.band_lower = GranularHydro1D::kHalfBand;
-  return CvodeIntegrator([&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); },
-                         0.0, U, o);
+  return CvodeIntegrator(
+      [&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); }, 0.0, U,
+      o);
 }
 }  // namespace
 
@@ -88,8 +89,8 @@ TEST(HydroWaves, GasHittingAWallMakesTheRankineHugoniotShock) {
       << "shock speed in the wall frame; Rankine-Hugoniot s = " << rh.speed << " m/s";
   const auto& V = cv.state();
   const int plateau = static_cast<int>(0.75 * z2 / pde.dz());
-  const double theta2 = V[3 * plateau + 2] / V[3 * plateau] -
-                        0.5 * std::pow(V[3 * plateau + 1] / V[3 * plateau], 2);
+  const double theta2 =
+      V[3 * plateau + 2] / V[3 * plateau] - 0.5 * std::pow(V[3 * plateau + 1] / V[3 * plateau], 2);
   EXPECT_NEAR(theta2, rh.theta, 0.03 * rh.theta);
   EXPECT_NEAR(V[3 * plateau] / (kMass / kDisk), rh.nu, 0.03 * rh.nu);
 }
@@ -127,5 +128,6 @@ TEST(HydroWaves, SmallPulseTravelsAtTheAdiabaticSoundSpeed) {
     if (V[3 * i] > V[3 * best]) best = i;
   const double a = V[3 * (best - 1)], bb = V[3 * best], cc = V[3 * (best + 1)];
   const double peak = pde.cellCentre(best) + 0.5 * pde.dz() * (a - cc) / (a - 2 * bb + cc);
-  EXPECT_NEAR((peak - z0) / t, c, 0.02 * c) << "c_s = " << c << " m/s; measured " << (peak - z0) / t;
+  EXPECT_NEAR((peak - z0) / t, c, 0.02 * c)
+      << "c_s = " << c << " m/s; measured " << (peak - z0) / t;
 }

@@ -132,9 +132,7 @@ INSTANTIATE_TEST_SUITE_P(PeriodOneBelowDoubling, BouncingBall,
                          ::testing::Values(std::pair{2.5, 1}, std::pair{3.0, 1},
                                            std::pair{3.6, 1}));
 INSTANTIATE_TEST_SUITE_P(PeriodTwoUpTo6p59, BouncingBall,
-                         ::testing::Values(std::pair{3.9, 2}, std::pair{4.0, 2},
-                                           std::pair{5.0, 2}, std::pair{6.0, 2},
-                                           std::pair{6.5, 2}));
+                         ::testing::Values(std::pair{3.9, 2}, std::pair{4.0, 2}, std::pair{5.0, 2},
+                                           std::pair{6.0, 2}, std::pair{6.5, 2}));
 // Beyond the second doubling (6.5938) the orbit has period 4.
-INSTANTIATE_TEST_SUITE_P(PeriodFourBeyond6p59, BouncingBall,
-                         ::testing::Values(std::pair{6.65, 4}));
+INSTANTIATE_TEST_SUITE_P(PeriodFourBeyond6p59, BouncingBall, ::testing::Values(std::pair{6.65, 4}));

@@ -56,7 +56,7 @@ TEST(GapRootFinder, BallOnVibratingPlateMatchesDenseScan) {
   const double w = 2 * std::numbers::pi * 10;
   for (int k = 0; k < 40; ++k) {
     // Various launch heights and speeds, Gamma = 4.
-    BallOverPlate b{0.002 + 0.0005 * k, 0.3 - 0.02 * k, 0.013 * k, 9.81, 0.001,
+    BallOverPlate b{0.002 + 0.0005 * k,     0.3 - 0.02 * k, 0.013 * k, 9.81, 0.001,
                     {4 * 9.81 / (w * w), w}};
     if (b(b.t0).h <= 0) continue;
     const double expected = scanFirstRoot(b, b.t0, b.t0 + 0.5, 200000);

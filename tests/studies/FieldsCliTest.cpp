@@ -28,8 +28,8 @@ class FieldsCli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / "wet.toml") << "[contact]\nrestitution = \"wet\"\n[run]\nduration = 4\n";
-    ASSERT_EQ(std::system(("cd '" + dir_.string() + "' && '" GRANWAVE_BINARY
-                           "' simulate -q wet.toml -o wet.h5 > /dev/null")
+    ASSERT_EQ(std::system(("cd '" + dir_.string() +
+                           "' && '" GRANWAVE_BINARY "' simulate -q wet.toml -o wet.h5 > /dev/null")
                               .c_str()),
               0);
   }
@@ -42,8 +42,8 @@ class FieldsCli : public ::testing::Test {
     return ss.str();
   }
   Result run(const std::string& args) {
-    const std::string cmd = "cd '" + dir_.string() + "' && '" GRANWAVE_BINARY "' " + args +
-                            " > out.txt 2> err.txt";
+    const std::string cmd =
+        "cd '" + dir_.string() + "' && '" GRANWAVE_BINARY "' " + args + " > out.txt 2> err.txt";
     const int status = std::system(cmd.c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"),
             slurp(dir_ / "err.txt")};

@@ -45,7 +45,8 @@ class HydroCli : public ::testing::Test {
 }  // namespace
 
 TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
-  const Result r = run("[hydro]\ncells = 100\n[run]\nphases_per_cycle = 50\nduration = 1.2\n", "-o h.h5");
+  const Result r =
+      run("[hydro]\ncells = 100\n[run]\nphases_per_cycle = 50\nduration = 1.2\n", "-o h.h5");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("periodic state  reached"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("relative change"), std::string::npos);
@@ -53,7 +54,7 @@ TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
   const auto shape = f.shape("/plate_frame/temperature");
   ASSERT_EQ(shape.size(), 2u);
   EXPECT_EQ(shape[1], 100u);
-  EXPECT_EQ(shape[0] % 50, 0u);  // whole cycles of 50 phases
+  EXPECT_EQ(shape[0] % 50, 0u);                          // whole cycles of 50 phases
   EXPECT_EQ(f.shape("/lab_frame/temperature")[1], 40u);  // the coarse-graining grid
   EXPECT_GT(f.readAttribute<std::int64_t>("/solver", "steps"), 0);
   EXPECT_EQ(f.readStringAttribute("/plate_frame/temperature", "unit"), "J");

@@ -43,8 +43,8 @@ class SimulateCli : public ::testing::Test {
     return ss.str();
   }
   Result run(const std::string& args, const std::string& prefix = "") {
-    const std::string cmd = "cd '" + dir_.string() + "' && " + prefix + " '" GRANWAVE_BINARY
-                            "' " + args + " > out.txt 2> err.txt";
+    const std::string cmd = "cd '" + dir_.string() + "' && " + prefix + " '" GRANWAVE_BINARY "' " +
+                            args + " > out.txt 2> err.txt";
     const int status = std::system(cmd.c_str());
     Result r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"),
              slurp(dir_ / "err.txt")};
@@ -80,7 +80,8 @@ TEST_F(SimulateCli, WritesRunFileAndSummary) {
 }
 
 TEST_F(SimulateCli, SameSceneAndSeedGiveIdenticalFiles) {
-  const std::string scene = write("short.toml", std::string(kShort) + "[contact]\nrestitution = \"wet\"\n");
+  const std::string scene =
+      write("short.toml", std::string(kShort) + "[contact]\nrestitution = \"wet\"\n");
   ASSERT_EQ(run("simulate -q " + scene + " -o a.h5").code, 0);
   ASSERT_EQ(run("simulate -q " + scene + " -o b.h5").code, 0);
   // The command line (output name) is stored as provenance: compare trajectories instead
@@ -150,7 +151,8 @@ TEST_F(SimulateCli, CollapseWithoutTCIsReportedAndWritesNothing) {
 
 TEST_F(SimulateCli, InterruptSavesPartialRunUnderInterruptedName) {
   const std::string scene = write("long.toml", "[run]\nduration = 600\n");
-  const Result r = run("simulate -q " + scene + " -o run.h5", "timeout --preserve-status -s INT 1.5");
+  const Result r =
+      run("simulate -q " + scene + " -o run.h5", "timeout --preserve-status -s INT 1.5");
   EXPECT_EQ(r.code, 130) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "run.h5"));
   ASSERT_TRUE(fs::exists(dir_ / "run.h5.interrupted")) << r.err;
