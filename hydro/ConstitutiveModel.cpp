@@ -34,6 +34,11 @@ LocalState ConstitutiveModel::pressureAndSoundSpeed(double rho, double theta) co
   return s;
 }
 
+double ConstitutiveModel::pressure(double rho, double theta) const {
+  const DiskGas gas{mass, sigma};
+  return rho * theta * pressureFactor(gas.areaFraction(gas.numberDensity(rho)), theta, restitution);
+}
+
 double ConstitutiveModel::wallDissipation(double p, double theta) const {
   // (1 - e_w^2) p sqrt(T / (2 pi m)) with the wall-averaged Phi_W (physics-hydro.md 2.2, 4.2)
   return wall_restitution.phiWall(theta) * p * std::sqrt(theta / (2 * std::numbers::pi));

@@ -1,5 +1,6 @@
 #include "hydro/GranularHydro1D.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -85,18 +86,22 @@ int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) cons
   for (int f = 0; f <= N; ++f) {
     const Primitive L = faceState(f + 1, +0.5);
     const Primitive R = faceState(f + 2, -0.5);
-    const LocalState sl = model_.pressureAndSoundSpeed(L.rho, L.theta);
-    const LocalState sr = model_.pressureAndSoundSpeed(R.rho, R.theta);
+    const double pL = model_.pressure(L.rho, L.theta);
+    const double pR = model_.pressure(R.rho, R.theta);
+    // Wave-speed bound from the adjacent cells' sound speeds (local Lax-Friedrichs); the
+    // sound speed is computed once per cell, in evaluate().
+    const double cL = local_[std::max(f - 1, 0)].sound_speed;
+    const double cR = local_[std::min(f, N - 1)].sound_speed;
     const double mL = L.rho * L.u, mR = R.rho * R.u;
     const double EL = L.rho * (0.5 * L.u * L.u + L.theta), ER = R.rho * (0.5 * R.u * R.u + R.theta);
     // Local speed bound, smoothed: sqrt(x^2 + tiny) for |x|.
-    const double aL = std::sqrt(L.u * L.u + 1e-12) + sl.sound_speed;
-    const double aR = std::sqrt(R.u * R.u + 1e-12) + sr.sound_speed;
+    const double aL = std::sqrt(L.u * L.u + 1e-12) + cL;
+    const double aR = std::sqrt(R.u * R.u + 1e-12) + cR;
     const double a = 0.5 * (aL + aR + std::sqrt((aL - aR) * (aL - aR) + 1e-12));
     double* F = &flux_[static_cast<std::size_t>(kVars) * f];
     F[0] = 0.5 * (mL + mR) - 0.5 * a * (R.rho - L.rho);
-    F[1] = 0.5 * (mL * L.u + sl.p + mR * R.u + sr.p) - 0.5 * a * (mR - mL);
-    F[2] = 0.5 * ((EL + sl.p) * L.u + (ER + sr.p) * R.u) - 0.5 * a * (ER - EL);
+    F[1] = 0.5 * (mL * L.u + pL + mR * R.u + pR) - 0.5 * a * (mR - mL);
+    F[2] = 0.5 * ((EL + pL) * L.u + (ER + pR) * R.u) - 0.5 * a * (ER - EL);
     if (f == 0 || f == N) {  // walls: no mass or convective energy through them
       F[0] = 0;
       F[2] = 0;
