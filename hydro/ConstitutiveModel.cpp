@@ -39,6 +39,10 @@ double ConstitutiveModel::pressure(double rho, double theta) const {
   return rho * theta * pressureFactor(gas.areaFraction(gas.numberDensity(rho)), theta, restitution);
 }
 
+double ConstitutiveModel::sideWallSink(double p, double theta) const {
+  return side_wall_width > 0 ? 2.0 / side_wall_width * wallDissipation(p, theta) : 0.0;
+}
+
 double ConstitutiveModel::wallDissipation(double p, double theta) const {
   // (1 - e_w^2) p sqrt(T / (2 pi m)) with the wall-averaged Phi_W (physics-hydro.md 2.2, 4.2)
   return wall_restitution.phiWall(theta) * p * std::sqrt(theta / (2 * std::numbers::pi));

@@ -27,7 +27,8 @@ struct ConstitutiveModel {
   RestitutionClosure restitution;       // pair collisions
   RestitutionClosure wall_restitution;  // particle-wall collisions (the paper: the same law)
   TransportSet transport = TransportSet::JenkinsRichman;
-  double knudsen_length = 0;  // l_max, m (0 = no limiter)
+  double knudsen_length = 0;   // l_max, m (0 = no limiter)
+  double side_wall_width = 0;  // L_x, m, for the side-wall sink (0 = no side walls)
 
   // Everything (pressure, transport, cooling, sound speed) at cell centres.
   LocalState evaluate(double rho, double theta) const;
@@ -37,6 +38,9 @@ struct ConstitutiveModel {
   double pressure(double rho, double theta) const;
   // Energy flux into a flat wall: Phi_W^wall(theta) p sqrt(theta / (2 pi)).
   double wallDissipation(double p, double theta) const;
+  // Side walls of the Q2D cell as a sink per unit area (physics-hydro.md 2.2, optional):
+  // D_side = (2 / L_x) Phi_W^wall(theta) p sqrt(theta / (2 pi)); 0 without side walls.
+  double sideWallSink(double p, double theta) const;
 };
 
 }  // namespace granwave::hydro

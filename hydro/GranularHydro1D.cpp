@@ -137,7 +137,8 @@ int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) cons
     d[1] = -(Fr[1] - Fl[1]) / h - c[0] * geff;
     // Work of gravity with the same mass fluxes that move the mass: then total energy
     // (kinetic + internal + potential) is conserved by the discretisation itself.
-    d[2] = -(Fr[2] - Fl[2]) / h - 0.5 * (Fl[0] + Fr[0]) * geff - local_[i].cooling;
+    d[2] = -(Fr[2] - Fl[2]) / h - 0.5 * (Fl[0] + Fr[0]) * geff - local_[i].cooling -
+           model_.sideWallSink(local_[i].p, prim_[i + 2].theta);
   }
   for (int k = 0; k < kVars * N; ++k)
     if (!std::isfinite(dUdt[k])) return 1;

@@ -76,6 +76,7 @@ struct HydroSpec {
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;
   HydroTransport transport = HydroTransport::JenkinsRichman;
+  bool side_walls = false;  // side-wall dissipation as a volumetric sink (x not periodic)
 };
 
 struct Scene {

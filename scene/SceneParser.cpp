@@ -190,6 +190,7 @@ const Field kFields[] = {
     {"hydro", "atol", number<kH, &HydroSpec::atol>},
     {"hydro", "restitution_model", readHydroModel},
     {"hydro", "transport", readHydroTransport},
+    {"hydro", "side_walls", boolean<kH, &HydroSpec::side_walls>},
 };
 
 const Field* findField(std::string_view section, std::string_view name) {

@@ -138,6 +138,7 @@ std::string sceneToToml(const Scene& s) {
   w.key("restitution_model",
         quoted(s.hydro.restitution_model == HydroRestitutionModel::Constant ? "constant"
                                                                             : "velocity"));
+  w.key("side_walls", s.hydro.side_walls);
   w.key("transport", quoted(s.hydro.transport == HydroTransport::GarzoDufty ? "garzo-dufty"
                                                                             : "jenkins-richman"));
   return w.take();

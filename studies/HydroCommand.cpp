@@ -83,6 +83,8 @@ int runHydro(const HydroOptions& opt) {
                         ? hydro::TransportSet::GarzoDufty
                         : hydro::TransportSet::JenkinsRichman;
   model.knudsen_length = d;
+  if (scene.hydro.side_walls && !scene.container.periodic_x)
+    model.side_wall_width = scene.container.width;
   hydro::HydroGeometry geom;
   geom.cells = scene.hydro.cells;
   geom.height = scene.container.height;

@@ -206,3 +206,25 @@ TEST(CvodeIntegrator, ExceptionInRightHandSideIsReportedNotSwallowed) {
     EXPECT_NE(std::string(e.what()).find("closure out of range"), std::string::npos) << e.what();
   }
 }
+
+TEST(HydroSolver, SideWallSinkRemovesTheKineticWallFlux) {
+  // Uniform gas at t = 0: fluxes cancel in the middle cell, so its energy rate is
+  // -D_c - D_side with D_side = (2 / L_x)(1 - e_w^2) p sqrt(theta / (2 pi)) for a constant
+  // wall restitution e_w (physics-hydro.md 2.2): half-Maxwellian flux onto two side walls.
+  HydroGeometry g;
+  g.cells = 20;
+  g.height = 20 * kD;
+  g.gravity = 0;
+  ConstitutiveModel m = model(RestitutionClosure::constant(1.0), RestitutionClosure::constant(0.8));
+  m.side_wall_width = 30 * kD;
+  const GranularHydro1D pde(g, m);
+  const double nu = 0.3, theta = 0.05;
+  const std::vector<double> U = uniform(pde, nu, theta);
+  std::vector<double> R(U.size());
+  ASSERT_EQ(pde.rightHandSide(0.0, U.data(), R.data()), 0);
+  const double rho = U[3 * 10];
+  const double p = m.pressure(rho, theta);
+  const double expected =
+      -2.0 / (30 * kD) * (1 - 0.8 * 0.8) * p * std::sqrt(theta / (2 * std::numbers::pi));
+  EXPECT_NEAR(R[3 * 10 + 2] / expected, 1.0, 1e-9);  // e = 1 between particles: D_c = 0
+}

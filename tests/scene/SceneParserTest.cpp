@@ -52,6 +52,7 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.hydro.atol, b.hydro.atol);
   EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);
   EXPECT_EQ(a.hydro.transport, b.hydro.transport);
+  EXPECT_EQ(a.hydro.side_walls, b.hydro.side_walls);
 }
 
 std::string sceneFile(const char* name) {
