@@ -19,6 +19,8 @@ std::string cvodeFlagName(int flag) {
   const char* name = CVodeGetReturnFlagName(flag);
   std::string s = name ? name : "unknown";
   std::free(const_cast<char*>(name));  // CVODE allocates the name
+  // SUNDIALS 6.4's lookup does not know every code it returns.
+  if (s == "NONE" && flag == CV_CONSTR_FAIL) s = "CV_CONSTR_FAIL";
   return s;
 }
 
