@@ -231,7 +231,8 @@ TEST(HydroSolver, SideWallSinkRemovesTheKineticWallFlux) {
 
 TEST(HydroSolver, EnergyBudgetOfADrivenLayerClosesExactly) {
   // In the plate frame with E_tot = sum h (E_i + rho_i g_eff z_i), the discretisation gives
-  //   sum_i h (dE_i/dt + g_eff z_i d(rho_i)/dt) = -(sum_i h (D_c + D_side)_i + D_w,bottom + D_w,lid)
+  //   sum_i h (dE_i/dt + g_eff z_i d(rho_i)/dt) = -(sum_i h (D_c + D_side)_i + D_w,bottom +
+  //   D_w,lid)
   // exactly (summation by parts: gravity's work uses the face mass fluxes), for any state.
   // Checked on the state of a driven layer in mid-flight after 2.3 cycles (shocks, a gap
   // under the layer), with side walls: relative to the losses, to 1e-9.
@@ -249,8 +250,9 @@ TEST(HydroSolver, EnergyBudgetOfADrivenLayerClosesExactly) {
   CvodeOptions co;
   co.atol.assign(pde.size(), 1e-12);
   co.band_upper = co.band_lower = GranularHydro1D::kHalfBand;
-  CvodeIntegrator cv([&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); },
-                     0.0, sim.initialState(), co);
+  CvodeIntegrator cv(
+      [&pde](double t, const double* y, double* d) { return pde.rightHandSide(t, y, d); }, 0.0,
+      sim.initialState(), co);
   const double t = 0.23;
   cv.advanceTo(t);
   const std::vector<double>& U = cv.state();

@@ -77,7 +77,8 @@ TEST(HydroAccuracy, SemiDiscreteOperatorIsSecondOrderOnASmoothManufacturedState)
     const Errors e = truncationError(cells);
     const double pm = std::log2(prev.momentum / e.momentum);
     const double pe = std::log2(prev.energy / e.energy);
-    std::printf("cells %d momentum %.3e (order %.2f) energy %.3e (order %.2f)\n", cells, e.momentum, pm, e.energy, pe);
+    std::printf("cells %d momentum %.3e (order %.2f) energy %.3e (order %.2f)\n", cells, e.momentum,
+                pm, e.energy, pe);
     EXPECT_GE(pm, 1.8) << cells << " cells: momentum error " << e.momentum;
     EXPECT_GE(pe, 1.8) << cells << " cells: energy error " << e.energy;
     prev = e;
