@@ -14,6 +14,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "HydroTestSupport.hpp"
 #include "hydro/CvodeIntegrator.hpp"
 #include "hydro/GranularHydro1D.hpp"
 #include "hydro/PairCorrelation.hpp"
@@ -21,9 +22,9 @@
 using namespace granwave::hydro;
 
 namespace {
-constexpr double kD = 0.002;
-const double kMass = 2580 * std::numbers::pi * kD * kD * kD / 6;
-const double kDisk = std::numbers::pi * kD * kD / 4;
+using test::kD;
+using test::kDisk;
+using test::kMass;
 constexpr double kNu = 0.2;
 
 struct Cooling {
@@ -48,12 +49,7 @@ double rk4(const RestitutionClosure& law, double theta0, double t, int steps) {
 }
 
 double pdeTheta(const RestitutionClosure& law, double theta0, double t) {
-  ConstitutiveModel m;
-  m.mass = kMass;
-  m.sigma = kD;
-  m.restitution = law;
-  m.wall_restitution = RestitutionClosure::constant(1.0);
-  m.knudsen_length = kD;
+  const ConstitutiveModel m = test::beadModel(law, RestitutionClosure::constant(1.0));
   HydroGeometry g;
   g.cells = 20;
   g.height = 20 * kD;

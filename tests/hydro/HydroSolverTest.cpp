@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "HydroTestSupport.hpp"
 #include "hydro/CvodeIntegrator.hpp"
 #include "hydro/HydroSimulation.hpp"
 #include "hydro/PairCorrelation.hpp"
@@ -12,17 +13,11 @@
 using namespace granwave::hydro;
 
 namespace {
-constexpr double kD = 0.002;
-const double kMass = 2580 * std::numbers::pi * kD * kD * kD / 6;
+using test::kD;
+using test::kMass;
 
 ConstitutiveModel model(RestitutionClosure pairs, RestitutionClosure walls) {
-  ConstitutiveModel m;
-  m.mass = kMass;
-  m.sigma = kD;
-  m.restitution = pairs;
-  m.wall_restitution = walls;
-  m.knudsen_length = kD;
-  return m;
+  return test::beadModel(pairs, walls);
 }
 
 std::vector<double> uniform(const GranularHydro1D& pde, double nu, double theta) {

@@ -13,14 +13,16 @@
 #include <cstdio>
 #include <numbers>
 
+#include "HydroTestSupport.hpp"
 #include "hydro/GranularHydro1D.hpp"
 
 using namespace granwave::hydro;
 
 namespace {
-constexpr double kD = 0.002, kL = 0.06;
-const double kMass = 2580 * std::numbers::pi * kD * kD * kD / 6;
-const double kRho0 = 0.4 * kMass / (std::numbers::pi * kD * kD / 4);
+using test::kD;
+using test::kMass;
+constexpr double kL = 0.06;
+const double kRho0 = 0.4 * kMass / test::kDisk;
 
 double rhoStar(double z) { return kRho0 * std::exp(-z / (0.8 * kL)); }
 double thetaStar(double z) { return 0.05 * (1 + z / kL); }
@@ -31,12 +33,8 @@ struct Errors {
 };
 
 Errors truncationError(int cells) {
-  ConstitutiveModel m;
-  m.mass = kMass;
-  m.sigma = kD;
-  m.restitution = RestitutionClosure::dry(0.1);
-  m.wall_restitution = m.restitution;
-  m.knudsen_length = kD;
+  const ConstitutiveModel m =
+      test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
   HydroGeometry g;
   g.cells = cells;
   g.height = kL;

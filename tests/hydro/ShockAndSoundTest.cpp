@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "HydroTestSupport.hpp"
 #include "hydro/CvodeIntegrator.hpp"
 #include "hydro/GranularHydro1D.hpp"
 #include "hydro/ShockRelations.hpp"
@@ -15,9 +16,8 @@
 using namespace granwave::hydro;
 
 namespace {
-constexpr double kD = 0.002;
-const double kMass = 2580 * std::numbers::pi * kD * kD * kD / 6;
-const double kDisk = std::numbers::pi * kD * kD / 4;
+using test::kDisk;
+using test::kMass;
 
 struct Setup {
   GranularHydro1D pde;
@@ -25,12 +25,8 @@ struct Setup {
 };
 
 GranularHydro1D elasticPde(int cells, double height) {
-  ConstitutiveModel m;
-  m.mass = kMass;
-  m.sigma = kD;
-  m.restitution = RestitutionClosure::constant(1.0);
-  m.wall_restitution = m.restitution;
-  m.knudsen_length = kD;
+  const ConstitutiveModel m =
+      test::beadModel(RestitutionClosure::constant(1.0), RestitutionClosure::constant(1.0));
   HydroGeometry g;
   g.cells = cells;
   g.height = height;
