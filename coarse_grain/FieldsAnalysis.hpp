@@ -15,7 +15,6 @@ namespace granwave {
 struct FieldsContext {
   double diameter = 0, mass = 0, inertia = 0;
   double frequency = 0, amplitude = 0, T0 = 0;
-  double width = 0, height = 0;
   int layer_period = 0;  // detected period of the centre of mass (0 = unknown)
   std::string source;    // run file or "live"
   std::string scene_toml;

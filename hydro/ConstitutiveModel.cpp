@@ -25,15 +25,6 @@ LocalState ConstitutiveModel::evaluate(double rho, double theta) const {
   return s;
 }
 
-LocalState ConstitutiveModel::pressureAndSoundSpeed(double rho, double theta) const {
-  const DiskGas gas{mass, sigma};
-  const double nu = gas.areaFraction(gas.numberDensity(rho));
-  LocalState s;
-  s.p = rho * theta * pressureFactor(nu, theta, restitution);  // p = n T F
-  s.sound_speed = adiabaticSoundSpeed(nu, theta, restitution);
-  return s;
-}
-
 double ConstitutiveModel::pressure(double rho, double theta) const {
   const DiskGas gas{mass, sigma};
   return rho * theta * pressureFactor(gas.areaFraction(gas.numberDensity(rho)), theta, restitution);

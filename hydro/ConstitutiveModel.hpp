@@ -32,8 +32,6 @@ struct ConstitutiveModel {
 
   // Everything (pressure, transport, cooling, sound speed) at cell centres.
   LocalState evaluate(double rho, double theta) const;
-  // Only p and the sound speed.
-  LocalState pressureAndSoundSpeed(double rho, double theta) const;
   // Only p = n T (1 + Phi_P nu g2): the face fluxes need nothing else.
   double pressure(double rho, double theta) const;
   // Energy flux into a flat wall: Phi_W^wall(theta) p sqrt(theta / (2 pi)).

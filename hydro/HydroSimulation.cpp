@@ -53,10 +53,8 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
     p.u.push_back(u);
     p.theta.push_back(theta);
     p.area_fraction.push_back(rho / m * disk);
-    p.pressure.push_back(pde_.model()
-                             .pressureAndSoundSpeed(std::max(rho, pde_.rhoFloor()),
-                                                    std::max(theta, pde_.thetaFloor()))
-                             .p);
+    p.pressure.push_back(
+        pde_.model().pressure(std::max(rho, pde_.rhoFloor()), std::max(theta, pde_.thetaFloor())));
     mz += rho * pde_.cellCentre(i);
     mm += rho;
   }

@@ -32,7 +32,6 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
   if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
     throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
   cells_ = CellGrid(g, n);
-  z_floor_ = g.z0;
 
   const double aw2 = cfg_.plate.maxAcceleration();
   bottom_curvature_ = cfg_.gravity + aw2;

@@ -112,7 +112,6 @@ class EdSimulation {
   Observables obs_;
   double now_ = 0;
   double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0, ride_curvature_ = 0;
-  double z_floor_ = 0;  // lowest height a centre can reach (grid origin)
   std::uint64_t records_ = 0;
   double next_record_ = 0;
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)

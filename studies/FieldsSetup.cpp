@@ -34,8 +34,6 @@ FieldsContext fieldsContext(const Scene& s, const std::string& source,
   c.frequency = s.drive.frequency;
   c.amplitude = dv.amplitude;
   c.T0 = dv.T0;
-  c.width = s.container.width;
-  c.height = s.container.height;
   c.layer_period = layer_period;
   c.source = source;
   c.scene_toml = scene_toml;
