@@ -25,7 +25,7 @@ struct CvodeOptions {
   int max_order = 0;                      // 0 = method default (BDF 5, Adams 12)
   bool stability_limit_detection = true;  // BDF only (CVodeSetStabLimDet)
   double max_step = 0;                    // s, 0 = no limit
-  long max_steps = 1'000'000;             // per advance() call
+  long max_steps = 20'000;  // per advance() call (an output interval); ~10 needed on average
   int band_upper = 0, band_lower = 0;
   std::vector<double> constraints;  // empty = none; else per component 0, 1, 2 (CVODE semantics)
 };

@@ -94,6 +94,12 @@ class EdSimulation {
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
   bool pinched(int i, Vec2 away, Motion rigid, int exclude) const;
   void noteCollision(int i, int partner);
+  // Books a restitution-law pair impact at normal speed v_n (Observables::pair_impact_*).
+  void bookImpact(double v_n, double e_n) {
+    const double impact = 0.25 * cfg_.mass * v_n * v_n;
+    obs_.pair_impact_energy += impact;
+    obs_.pair_impact_loss += impact * (1.0 - e_n * e_n);
+  }
   bool tcElastic(int i, int j) const;
   // state
   void advance(int i, double t);

@@ -132,6 +132,7 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   const bool elastic = tcElastic(i, j);
   const double e_n = elastic ? 1.0 : cfg_.restitution(closing);
   const double before = particleEnergy(a) + particleEnergy(b);
+  if (!elastic) bookImpact(closing, e_n);
   const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
   a.vx = mean - e_n * half;
   b.vx = mean + e_n * half;
@@ -181,6 +182,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const bool elastic = tcElastic(i, j);
   const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
   const double before = particleEnergy(a) + particleEnergy(b);
+  if (!elastic) bookImpact(vn, e_n);
   const PairCollisionResult c = collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter,
                                             e_n, cfg_.tangential, rotation_ && !elastic);
   a.vx = c.v1.x;

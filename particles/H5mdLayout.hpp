@@ -83,7 +83,7 @@ struct CountObservable {
                  [](const Snapshot& s) { return s.obs.field; },      \
                  [](Snapshot& s, double v) { s.obs.field = v; }}
 // clang-format on
-inline constexpr std::array<RealObservable, 8> kRealObservables{
+inline constexpr std::array<RealObservable, 10> kRealObservables{
     GRANWAVE_REAL(center_of_mass_height, "m"),
     GRANWAVE_REAL(kinetic_energy, "J"),
     GRANWAVE_REAL(rotational_energy, "J"),
@@ -91,6 +91,8 @@ inline constexpr std::array<RealObservable, 8> kRealObservables{
     GRANWAVE_REAL(dissipated_energy, "J"),
     GRANWAVE_REAL(wall_work, "J"),
     GRANWAVE_REAL(pressure, "Pa m"),
+    GRANWAVE_REAL(pair_impact_energy, "J"),
+    GRANWAVE_REAL(pair_impact_loss, "J"),
     RealObservable{"plate_height", "m", [](const Snapshot& s) { return s.plate_height; },
                    [](Snapshot& s, double v) { s.plate_height = v; }},
 };

@@ -22,6 +22,12 @@ struct Observables {
   double dissipated_energy = 0;      // J, cumulative loss in collisions (partner/wall frame)
   double wall_work = 0;              // J, cumulative work done by moving walls
   double pressure = 0;               // Pa m (2D), collisional+kinetic, periodic boxes only
+  // Cumulative normal impact energy (m/4) v_n^2 of the pair collisions that used the
+  // restitution law (TC-elastic ones excluded), and its part lost, (m/4) (1 - e_n^2) v_n^2.
+  // Their ratio is the energy-weighted <1 - e_n^2> of the run: e_eff^2 = 1 - loss/impact,
+  // the particle-level counterpart of hydro's Phi_W (effective-restitution study).
+  double pair_impact_energy = 0;  // J
+  double pair_impact_loss = 0;    // J
   CollisionCounts collisions;
   std::uint64_t events = 0;  // all processed events (collisions, crossings, ...)
 };

@@ -14,19 +14,11 @@
 #include "hydro/HydroSimulation.hpp"
 #include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/StudyScenes.hpp"
 
 namespace granwave {
 
 namespace {
-
-hydro::RestitutionClosure closureFor(const Scene& s, const SceneDerived& dv) {
-  if (s.hydro.restitution_model == HydroRestitutionModel::Constant ||
-      s.contact.restitution == RestitutionKind::Constant)
-    return hydro::RestitutionClosure::constant(s.contact.e);
-  if (s.contact.restitution == RestitutionKind::Dry)
-    return hydro::RestitutionClosure::dry(s.contact.kappa);
-  return hydro::RestitutionClosure::wet(s.contact.e_inf, dv.v_c);
-}
 
 // Plate-frame profiles of one phase mapped onto the lab grid (NaN outside the container).
 void mapToLab(const hydro::HydroPhase& ph, double dz_plate, double height, const FieldGrid& grid,
@@ -77,7 +69,7 @@ int runHydro(const HydroOptions& opt) {
   hydro::ConstitutiveModel model;
   model.mass = dv.mass;
   model.sigma = d;
-  model.restitution = closureFor(scene, dv);
+  model.restitution = restitutionClosure(scene);
   model.wall_restitution = model.restitution;  // the paper: the same law at the walls
   model.transport = scene.hydro.transport == HydroTransport::GarzoDufty
                         ? hydro::TransportSet::GarzoDufty
@@ -162,17 +154,26 @@ int runHydro(const HydroOptions& opt) {
     put("/phases/time", times, {P}, "s");
     put("/phases/plate_height", plate, {P}, "m");
     put("/phases/center_of_mass_height", com_lab, {P}, "m");
+    std::vector<double> peak;
+    const std::vector<double> front_height =
+        frontHeights(lab, grid.z0, grid.wz, dv.T0, FrontOptions{}, &peak);
+    put("/phases/front_height", front_height, {P}, "m");
+    put("/phases/front_peak_temperature", peak, {P}, "1");
     f.createGroup("/fronts");
-    std::vector<double> fs, fe, ff, fl;
+    std::vector<double> fs, fe, ff, fla, fl, fp;
     for (const auto& e : fronts) {
       fs.push_back(e.speed);
       fe.push_back(e.fit_error);
       ff.push_back(e.first_phase);
+      fla.push_back(e.last_phase);
       fl.push_back(e.from_impact ? 1.0 : 0.0);
+      fp.push_back(e.peak_temperature);
     }
     put("/fronts/speed", fs, {fs.size()}, "m s-1");
     put("/fronts/fit_error", fe, {fe.size()}, "m s-1");
     put("/fronts/first_phase", ff, {ff.size()}, "1");
+    put("/fronts/last_phase", fla, {fla.size()}, "1");
+    put("/fronts/peak_temperature", fp, {fp.size()}, "1");
     put("/fronts/from_impact", fl, {fl.size()}, "1");
     f.createGroup("/solver");
     const std::string s = "/solver";

@@ -12,7 +12,10 @@
 #include "scene/SceneParser.hpp"
 #include "studies/FieldsCommand.hpp"
 #include "studies/HydroCommand.hpp"
+#include "studies/RunScheduler.hpp"
 #include "studies/SimulateCommand.hpp"
+#include "studies/StudyCommand.hpp"
+#include "studies/StudyFile.hpp"
 #include "studies/Version.hpp"
 
 int main(int argc, char** argv) {
@@ -26,6 +29,8 @@ int main(int argc, char** argv) {
   granwave::addFieldsCommand(app, fields);
   granwave::HydroOptions hydro;
   granwave::addHydroCommand(app, hydro);
+  granwave::StudyOptions study;
+  granwave::addStudyCommand(app, study);
   CLI11_PARSE(app, argc, argv);
 
   std::string command_line;
@@ -34,6 +39,13 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
     if (app.got_subcommand("fields")) return granwave::runFields(fields);
     if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
+    if (app.got_subcommand("study")) return granwave::runStudy(study);
+  } catch (const granwave::StudyInterrupted& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return 130;
+  } catch (const granwave::StudyError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return 2;
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 2;

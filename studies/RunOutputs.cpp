@@ -1,0 +1,132 @@
+#include "studies/RunOutputs.hpp"
+
+#include <cmath>
+
+#include "h5/File.hpp"
+#include "particles/H5mdLayout.hpp"
+
+namespace granwave {
+
+int Profiles::phaseIndex(double t) const {
+  int best = 0;
+  for (int p = 1; p < phases; ++p)
+    if (std::abs(phase[p] - t) < std::abs(phase[best] - t)) best = p;
+  return best;
+}
+
+ParticleFields readParticleFields(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  ParticleFields r;
+  r.z = f.readDataset<double>("/grid/z");
+  r.nz = static_cast<int>(r.z.size());
+  r.phase = f.readDataset<double>("/phases/phase");
+  r.phases = static_cast<int>(r.phase.size());
+  r.plate = f.readDataset<double>("/phases/plate_height");
+  r.com = f.readDataset<double>("/phases/center_of_mass_height");
+  r.front = f.readDataset<double>("/phases/front_height");
+  r.temperature = f.readDataset<double>("/profiles/temperature");
+  r.area_fraction = f.readDataset<double>("/profiles/area_fraction");
+  r.velocity_z = f.readDataset<double>("/profiles/velocity_z");
+  r.rms_velocity_x = f.readDataset<double>("/profiles/rms_velocity_x");
+  r.block_temperature = f.readDataset<double>("/blocks/profiles/temperature");
+  r.block_area_fraction = f.readDataset<double>("/blocks/profiles/area_fraction");
+  r.block_velocity_z = f.readDataset<double>("/blocks/profiles/velocity_z");
+  r.block_rms_vx = f.readDataset<double>("/blocks/profiles/rms_velocity_x");
+  const std::string par = "/parameters";
+  r.T0 = f.readAttribute<double>(par, "T0");
+  r.diameter = f.readAttribute<double>(par, "diameter");
+  r.mass = f.readAttribute<double>(par, "mass");
+  r.frequency = f.readAttribute<double>(par, "frequency");
+  r.amplitude = f.readAttribute<double>(par, "amplitude");
+  r.cycles_per_window = static_cast<int>(f.readAttribute<std::int64_t>(par, "cycles_per_window"));
+  r.layer_period = static_cast<int>(f.readAttribute<std::int64_t>(par, "layer_period"));
+  r.pooled_cycles = static_cast<int>(f.readAttribute<std::int64_t>(par, "pooled_cycles"));
+  r.blocks = static_cast<int>(f.readAttribute<std::int64_t>(par, "blocks"));
+  const auto first = f.readDataset<double>("/fronts/first_phase");
+  const auto speed = f.readDataset<double>("/fronts/speed");
+  const auto error = f.readDataset<double>("/fronts/speed_error");
+  const auto peak = f.readDataset<double>("/fronts/peak_temperature");
+  const auto gas = f.readDataset<double>("/fronts/gas_velocity_ahead");
+  const auto rel = f.readDataset<double>("/fronts/speed_relative");
+  const auto impact = f.readDataset<double>("/fronts/from_impact");
+  for (std::size_t e = 0; e < speed.size(); ++e) {
+    Front fr;
+    fr.start = r.phase[static_cast<std::size_t>(first[e])];
+    fr.speed = speed[e];
+    fr.error = error[e];
+    fr.peak = peak[e];
+    fr.gas_ahead = gas[e];
+    fr.relative = rel[e];
+    fr.from_impact = impact[e] > 0.5;
+    r.fronts.push_back(fr);
+  }
+  return r;
+}
+
+HydroFields readHydroFields(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  HydroFields r;
+  r.z = f.readDataset<double>("/lab_frame/z");
+  r.nz = static_cast<int>(r.z.size());
+  const auto time = f.readDataset<double>("/phases/time");
+  r.phases = static_cast<int>(time.size());
+  r.plate = f.readDataset<double>("/phases/plate_height");
+  r.com = f.readDataset<double>("/phases/center_of_mass_height");
+  r.temperature = f.readDataset<double>("/lab_frame/temperature");
+  r.area_fraction = f.readDataset<double>("/lab_frame/area_fraction");
+  r.velocity_z = f.readDataset<double>("/lab_frame/velocity_z");
+  r.rms_velocity_x.assign(r.temperature.size(), NAN);
+  r.front = f.readDataset<double>("/phases/front_height");
+  const std::string s = "/solver";
+  r.period = static_cast<int>(f.readAttribute<std::int64_t>(s, "period"));
+  r.cycles = static_cast<int>(f.readAttribute<std::int64_t>(s, "cycles"));
+  r.cells = static_cast<int>(f.readAttribute<std::int64_t>(s, "cells"));
+  r.periodic = f.readAttribute<std::int64_t>(s, "periodic") != 0;
+  r.steps = f.readAttribute<std::int64_t>(s, "steps");
+  r.rhs_evals = f.readAttribute<std::int64_t>(s, "rhs_evals");
+  r.rtol = f.readAttribute<double>(s, "rtol");
+  // Phase t/T: the window holds whole cycles sampled at k/M, k = 1..M per cycle.
+  // (HydroSimulation keeps 2 cycles when no period was found.)
+  const int window_cycles = r.periodic ? r.period : 2;
+  for (int p = 0; p < r.phases; ++p)
+    r.phase.push_back(static_cast<double>(p + 1) * window_cycles / r.phases);
+  const auto speed = f.readDataset<double>("/fronts/speed");
+  const auto err = f.readDataset<double>("/fronts/fit_error");
+  const auto first = f.readDataset<double>("/fronts/first_phase");
+  const auto impact = f.readDataset<double>("/fronts/from_impact");
+  const auto peak = f.readDataset<double>("/fronts/peak_temperature");
+  for (std::size_t e = 0; e < speed.size(); ++e) {
+    Front fr;
+    fr.start = r.phase[static_cast<std::size_t>(first[e])];
+    fr.speed = speed[e];
+    fr.error = err[e];
+    fr.peak = peak[e];
+    fr.from_impact = impact[e] > 0.5;
+    r.fronts.push_back(fr);
+  }
+  return r;
+}
+
+RunObservables readRunObservables(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  RunObservables r;
+  auto series = [&](const std::string& name) {
+    return f.readDataset<double>(h5md::observableGroup(name) + "/value");
+  };
+  r.time = f.readDataset<double>(h5md::observableGroup("center_of_mass_height") + "/time");
+  r.com_height = series("center_of_mass_height");
+  r.kinetic_energy = series("kinetic_energy");
+  const auto impact = series("pair_impact_energy");
+  const auto loss = series("pair_impact_loss");
+  if (!impact.empty()) {
+    r.pair_impact_energy = impact.back();
+    r.pair_impact_loss = loss.back();
+  }
+  const auto events = f.readDataset<std::uint64_t>(h5md::observableGroup("events") + "/value");
+  if (!events.empty()) r.events = events.back();
+  const auto coll = f.readDataset<std::uint64_t>(h5md::kCollisions + "/value");
+  if (coll.size() >= 4) r.pair_collisions = coll[coll.size() - 4];
+  return r;
+}
+
+}  // namespace granwave

@@ -1,0 +1,57 @@
+#pragma once
+// The outputs of one cached run as the studies use them, read back from the run's files:
+// phase-averaged particle fields (FIELDS.h5, docs/fields.md), the observables of the H5MD run
+// file, and the hydro solver's fields (HYDRO.h5, docs/hydro.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace granwave {
+
+struct Front {
+  double start = 0;                    // t/T of the first phase, within the window
+  double speed = 0, error = 0;         // m/s, lab frame
+  double peak = 0;                     // max T~_g / T0 over the episode
+  double gas_ahead = 0, relative = 0;  // m/s (particles only)
+  bool from_impact = true;
+};
+
+// Profiles laid out [phase][z]; block profiles [block][phase][z].
+struct Profiles {
+  int phases = 0, nz = 0;
+  std::vector<double> z;                         // m, lab-frame cell centres
+  std::vector<double> phase, plate, com, front;  // t/T within the window; m
+  std::vector<double> temperature, area_fraction, velocity_z, rms_velocity_x;
+  double at(const std::vector<double>& field, int phase, int j) const {
+    return field[static_cast<std::size_t>(phase) * nz + j];
+  }
+  // Phase index nearest to t/T within the window.
+  int phaseIndex(double t_over_T) const;
+};
+
+struct ParticleFields : Profiles {
+  double T0 = 0, diameter = 0, mass = 0, frequency = 0, amplitude = 0;
+  int cycles_per_window = 0, layer_period = 0, pooled_cycles = 0, blocks = 0;
+  std::vector<double> block_temperature, block_area_fraction, block_velocity_z, block_rms_vx;
+  std::vector<Front> fronts;
+};
+
+struct HydroFields : Profiles {
+  int period = 0, cycles = 0, cells = 0;
+  bool periodic = false;
+  std::int64_t steps = 0, rhs_evals = 0;
+  double rtol = 0;
+  std::vector<Front> fronts;
+};
+
+struct RunObservables {
+  std::vector<double> time, com_height, kinetic_energy;
+  std::uint64_t events = 0, pair_collisions = 0;
+  double pair_impact_energy = 0, pair_impact_loss = 0;  // final, cumulative
+};
+
+ParticleFields readParticleFields(const std::string& fields_path);
+HydroFields readHydroFields(const std::string& hydro_path);
+RunObservables readRunObservables(const std::string& run_path);
+
+}  // namespace granwave

@@ -1,0 +1,27 @@
+#pragma once
+// Runs a study's requests as child processes of this executable (`granwave simulate` /
+// `granwave hydro`), `jobs` at a time, skipping those the cache already holds. Results come
+// back in request order. Identical requests (same cache entry) run once.
+#include <stdexcept>
+#include <vector>
+
+#include "studies/RunCache.hpp"
+#include "studies/RunRequest.hpp"
+
+namespace granwave {
+
+// The study was interrupted (SIGINT/SIGTERM): finished runs are kept in the cache.
+class StudyInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct SchedulerOptions {
+  int jobs = 1;
+  bool quiet = false;
+};
+
+std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const RunCache& cache,
+                              const SchedulerOptions& options);
+
+}  // namespace granwave

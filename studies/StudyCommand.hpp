@@ -1,0 +1,24 @@
+#pragma once
+// `granwave study STUDY.toml [-o OUTDIR] [-j JOBS] [-q]`: checks the study file, runs what
+// the cache does not hold (OUTDIR/runs), analyses, and writes OUTDIR/results.h5 and
+// OUTDIR/report.html (drawn by studies/report/render_report.py with Debian's matplotlib).
+#include <string>
+
+namespace CLI {
+class App;
+}
+
+namespace granwave {
+
+struct StudyOptions {
+  std::string study_path;
+  std::string output;  // default: the study file's stem, in the working directory
+  int jobs = 0;        // 0 = number of cores
+  bool quiet = false;
+  bool no_report = false;  // results.h5 only (no Python needed)
+};
+
+void addStudyCommand(CLI::App& app, StudyOptions& options);
+int runStudy(const StudyOptions& options);
+
+}  // namespace granwave

@@ -1,0 +1,132 @@
+#include "studies/WaveFrontsStudy.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "scene/SceneDerived.hpp"
+#include "studies/StudyScenes.hpp"
+
+namespace granwave {
+
+namespace {
+
+std::string g(double v) { return fmt::format("{:g}", v); }
+
+}  // namespace
+
+WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
+  c_.dry_path = f.scenePath("scenes", "dry", "../scenes/paper-dry.toml");
+  c_.wet_path = f.scenePath("scenes", "wet", "../scenes/paper-wet.toml");
+  c_.set = f.strings("scenes", "set", {});
+  c_.duration = f.number("particles", "duration", c_.duration);
+  c_.seeds = f.integers("particles", "seeds", c_.seeds);
+  c_.window = f.integer("particles", "window_cycles", c_.window);
+  c_.blocks = f.integer("particles", "blocks", c_.blocks);
+  c_.profile_phases = f.numbers("particles", "profile_phases", c_.profile_phases);
+  c_.sweep_duration = f.number("sweep", "duration", c_.sweep_duration);
+  c_.counts = f.integers("sweep", "counts", c_.counts);
+  c_.stokes = f.numbers("sweep", "stokes_critical", c_.stokes);
+  c_.e_inf = f.numbers("sweep", "e_inf", c_.e_inf);
+  c_.cost_durations = f.numbers("cost", "durations", c_.cost_durations);
+  c_.cost_cells = f.integers("cost", "hydro_cells", c_.cost_cells);
+  c_.cost_rtol = f.numbers("cost", "hydro_rtol", c_.cost_rtol);
+  c_.fail_gammas = f.numbers("failure", "gammas", c_.fail_gammas);
+  c_.fail_duration = f.number("failure", "duration", c_.fail_duration);
+  c_.fail_cells = f.integers("failure", "hydro_cells", c_.fail_cells);
+  c_.fail_rtol = f.numbers("failure", "hydro_rtol", c_.fail_rtol);
+  if (c_.window < 1 || c_.window > 4) f.fail("particles", "window_cycles", "expected 1 to 4");
+  if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2");
+  if (!(c_.duration > 0)) f.fail("particles", "duration", "expected a positive time in s");
+
+  base_[0] = studyScene(f, c_.dry_path, c_.set);
+  base_[1] = studyScene(f, c_.wet_path, c_.set);
+  for (int law = 0; law < 2; ++law) {
+    if (!(base_[law].drive.frequency > 0))
+      f.fail("scenes", kLawNames[law], "the wave-fronts study needs a driven scene");
+    e_eff_[law] = effectiveRestitutionAtT0(base_[law]);
+  }
+
+  for (int law = 0; law < 2; ++law) {
+    for (int seed : c_.seeds)
+      add(RunKind::Particles, law, edLabel(law, fmt::format("seed {}", seed)),
+          {fmt::format("run.seed={}", seed)}, c_.duration);
+    add(RunKind::Hydro, law, hydroLabel(law, "velocity"), {}, 0);
+    add(RunKind::Hydro, law, hydroLabel(law, "constant"),
+        {"hydro.restitution_model=\"constant\"", fmt::format("contact.e={:.6f}", e_eff_[law])}, 0);
+    for (int n : c_.counts) {
+      add(RunKind::Particles, law, edLabel(law, fmt::format("N={}", n)),
+          {fmt::format("particles.count={}", n), fmt::format("run.seed={}", c_.seeds.front())},
+          c_.sweep_duration);
+      add(RunKind::Hydro, law, hydroLabel(law, fmt::format("N={}", n)),
+          {fmt::format("particles.count={}", n)}, 0);
+    }
+    // Where methods fail: ED without TC, hydro over Gamma x grid x tolerance.
+    for (double gamma : c_.fail_gammas) {
+      add(RunKind::Particles, law, edLabel(law, fmt::format("no TC Gamma={}", g(gamma))),
+          {"contact.tc=\"off\"", fmt::format("drive.gamma={}", g(gamma)),
+           fmt::format("run.seed={}", c_.seeds.front())},
+          c_.fail_duration);
+      for (int cells : c_.fail_cells)
+        for (double rtol : c_.fail_rtol)
+          add(RunKind::Hydro, law,
+              hydroLabel(law, fmt::format("Gamma={} {} cells rtol {}", g(gamma), cells, g(rtol))),
+              {fmt::format("drive.gamma={}", g(gamma)), fmt::format("hydro.cells={}", cells),
+               fmt::format("hydro.rtol={}", g(rtol))},
+              0);
+    }
+    // Simpler models than the full particle model.
+    const std::string seed = fmt::format("run.seed={}", c_.seeds.front());
+    add(RunKind::Particles, law, edLabel(law, "no rotation"), {"contact.friction=0", seed},
+        c_.duration);
+    add(RunKind::Particles, law, edLabel(law, "constant e"),
+        {"contact.restitution=\"constant\"", fmt::format("contact.e={:.6f}", e_eff_[law]), seed},
+        c_.duration);
+    add(RunKind::Hydro, law, hydroLabel(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
+        0);
+  }
+  for (double st : c_.stokes) {
+    add(RunKind::Particles, 1, edLabel(1, fmt::format("St_c={}", g(st))),
+        {fmt::format("contact.stokes_critical={}", g(st)),
+         fmt::format("run.seed={}", c_.seeds.front())},
+        c_.sweep_duration);
+    add(RunKind::Hydro, 1, hydroLabel(1, fmt::format("St_c={}", g(st))),
+        {fmt::format("contact.stokes_critical={}", g(st))}, 0);
+  }
+  for (double e : c_.e_inf) {
+    add(RunKind::Particles, 1, edLabel(1, fmt::format("e_inf={}", g(e))),
+        {fmt::format("contact.e_inf={}", g(e)), fmt::format("run.seed={}", c_.seeds.front())},
+        c_.sweep_duration);
+    add(RunKind::Hydro, 1, hydroLabel(1, fmt::format("e_inf={}", g(e))),
+        {fmt::format("contact.e_inf={}", g(e))}, 0);
+  }
+  // Cost against accuracy, wet layer: ED over the cycles averaged, hydro over grid x tolerance.
+  for (double d : c_.cost_durations)
+    add(RunKind::Particles, 1, edLabel(1, fmt::format("{} s", g(d))),
+        {fmt::format("run.seed={}", c_.seeds.front())}, d);
+  for (int cells : c_.cost_cells)
+    for (double rtol : c_.cost_rtol)
+      add(RunKind::Hydro, 1, hydroLabel(1, fmt::format("{} cells rtol {}", cells, g(rtol))),
+          {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", g(rtol))}, 0);
+}
+
+void WaveFrontsStudy::add(RunKind kind, int law, const std::string& label,
+                          std::vector<std::string> overrides, double duration) {
+  std::vector<std::string> all = c_.set;
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  if (kind == RunKind::Particles) all.push_back(fmt::format("run.duration={}", g(duration)));
+  RunRequest q;
+  q.kind = kind;
+  q.label = label;
+  q.scene = studyScene(*file_, law == 0 ? c_.dry_path : c_.wet_path, all);
+  q.window_cycles = c_.window;
+  q.blocks = c_.blocks;
+  requests_.push_back(std::move(q));
+}
+
+std::unique_ptr<Study> makeWaveFrontsStudy(StudyFile& file) {
+  return std::make_unique<WaveFrontsStudy>(file);
+}
+
+}  // namespace granwave

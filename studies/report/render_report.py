@@ -1,0 +1,301 @@
+#!/usr/bin/python3
+"""Render a granwave study results file (HDF5, "granwave-study-1") as one self-contained
+HTML page: render_report.py RESULTS.h5 OUT.html
+
+The C++ study writes every number and the report structure; this script only draws it.
+Exit status: 0 on success, 2 on bad input, 1 on any other error (one line on stderr).
+"""
+import base64
+import html
+import io
+import os
+import re
+import sys
+
+import h5py
+import matplotlib
+import numpy as np
+
+matplotlib.use("Agg")
+from matplotlib.figure import Figure  # noqa: E402  (after the backend is chosen)
+
+FORMAT = "granwave-study-1"
+REQUIRED = object()  # sentinel default: the attribute must be present
+NUMERIC = re.compile(r"\s*[-+\u2212]?(\d+\.?\d*|\.\d+)([eE][-+\u2212]?\d+)?(\s*(\u00b1|\+/-)\s*"
+                     r"(\d+\.?\d*|\.\d+)([eE][-+\u2212]?\d+)?)?\s*%?\s*|\s*[-+]?(nan|inf)\s*",
+                     re.IGNORECASE)
+CSS = """body{font-family:system-ui,"Segoe UI",Roboto,"DejaVu Sans",sans-serif;max-width:1000px;
+margin:2em auto;padding:0 1em;line-height:1.5;color:#222}h2{border-bottom:1px solid #ccc}
+.provenance{color:#666;font-size:.85em}table{border-collapse:collapse;margin:1em 0}caption{
+text-align:left;padding:.3em 0}th,td{border:1px solid #bbb;padding:.25em .6em}th{background:#eee}
+td.num{text-align:right;font-variant-numeric:tabular-nums}figure{margin:1.5em 0}figure img{
+max-width:100%}figcaption{font-size:.92em;color:#333}"""
+JS = """window.addEventListener("load", function () {
+  var imgs = document.getElementsByTagName("img"), loaded = 0;
+  for (var i = 0; i < imgs.length; i++) if (imgs[i].complete && imgs[i].naturalWidth > 0) loaded++;
+  document.body.setAttribute("data-figures-loaded", loaded + "/" + imgs.length);
+  document.body.setAttribute("data-tables", String(document.getElementsByTagName("table").length));
+});"""
+
+
+class InputError(Exception):
+    """The results file is missing, unreadable or does not follow the schema."""
+
+
+def first_line(err):
+    """First non-empty line of an exception message, so that errors stay one line."""
+    lines = [ln.strip() for ln in str(err).splitlines() if ln.strip()]
+    return lines[0] if lines else type(err).__name__
+
+
+def attr(node, name, default=REQUIRED):
+    """Raw attribute `name` of `node`, or `default`; InputError if required and missing."""
+    if name in node.attrs:
+        return node.attrs[name]
+    if default is REQUIRED:
+        raise InputError(f"{'root' if node.name == '/' else node.name}: "
+                         f"missing attribute '{name}'")
+    return default
+
+
+def as_str(value):
+    """str of a string attribute stored as str, bytes or a 1-element numpy array of either."""
+    value = value.ravel()[0] if isinstance(value, np.ndarray) and value.size == 1 else value
+    return value.decode("utf-8") if isinstance(value, bytes) else str(value)
+
+
+def get_nums(node, name):
+    """Optional numeric attribute (scalar or array) as a 1-D float64 array, or None."""
+    value = attr(node, name, None)
+    try:
+        return None if value is None else np.ravel(np.asarray(value, dtype=np.float64))
+    except (TypeError, ValueError):
+        raise InputError(f"{node.name}: attribute '{name}' is not numeric") from None
+
+
+def get_float(node, name, default=None):
+    """Numeric scalar attribute as float, or `default` when absent."""
+    values = get_nums(node, name)
+    if values is not None and len(values) > 0:
+        return float(values[0])
+    if default is REQUIRED:
+        raise InputError(f"{node.name}: missing numeric attribute '{name}'")
+    return default
+
+
+def get_data(group, name, n=None, required=True, ndim=1):
+    """float64 dataset `name` of `group` (None if optional and absent), shape-checked."""
+    if not isinstance(group.get(name), h5py.Dataset):
+        if required:
+            raise InputError(f"{group.name}: missing dataset '{name}'")
+        return None
+    data = np.asarray(group[name][()], dtype=np.float64)
+    if data.ndim != ndim or (n is not None and len(data) != n):
+        size = "" if n is None else f" of length {n}"
+        raise InputError(f"{group.name}/{name}: expected a {ndim}-D array{size}")
+    return data
+
+
+def children(group, name):
+    """Sub-groups of group[name] in sorted name order (numeric names numerically)."""
+    parent = group.get(name)
+    if not isinstance(parent, h5py.Group):
+        return []
+    keys = sorted(parent.keys(), key=lambda k: (not k.isdigit(), int(k) if k.isdigit() else 0, k))
+    return [parent[k] for k in keys if isinstance(parent[k], h5py.Group)]
+
+
+def paragraphs(text):
+    """HTML paragraphs of a text whose paragraphs are separated by blank lines."""
+    parts = [p.strip() for p in re.split(r"\n\s*\n", text) if p.strip()]
+    return "".join(f"<p>{html.escape(p)}</p>\n" for p in parts)
+
+
+def bold_title(title):
+    """Escaped title in bold, ending with a full stop (caption style)."""
+    return f"<b>{html.escape(title)}{'' if title.endswith(('.', '?', '!')) else '.'}</b>"
+
+
+def draw_series(ax, s):
+    """Draw one `series/KK` group onto the axes."""
+    style = as_str(attr(s, "style"))
+    kw = {"label": as_str(attr(s, "label", "")) or None}
+    kw.update({k: as_str(attr(s, k)) for k in ("color", "linestyle", "marker") if k in s.attrs})
+    kw.update({k: get_float(s, k) for k in ("linewidth", "alpha") if k in s.attrs})
+    data = [s.get(k) for k in ("x", "y", "y_low", "y_high")]
+    if not any(isinstance(d, h5py.Dataset) and d.size for d in data):
+        return  # no data at all (the C++ writer omits empty vectors): nothing to draw
+    x = get_data(s, "x", required=style != "hline")
+    if style == "band":
+        kw.pop("marker", None)
+        ax.fill_between(x, get_data(s, "y_low", len(x)), get_data(s, "y_high", len(x)),
+                        **{"alpha": 0.3, **kw})
+        return
+    y = get_data(s, "y", None if style == "hline" else len(x), required=style != "vline")
+    yerr = get_data(s, "yerr", None if y is None else len(y), required=False)
+    xerr = get_data(s, "xerr", None if x is None else len(x), required=False)
+    if style in ("hline", "vline") and len(x if style == "vline" else y) == 0:
+        raise InputError(f"{s.name}: {style} needs {'x' if style == 'vline' else 'y'}[0]")
+    marked = {"marker": "o", "linestyle": "none", **kw}
+    if style in ("hline", "vline"):  # a level, with an optional shaded +-err band
+        horizontal = style == "hline"
+        at, err = (y, yerr) if horizontal else (x, xerr)
+        line = (ax.axhline if horizontal else ax.axvline)(at[0], **kw)
+        if err is not None:
+            (ax.axhspan if horizontal else ax.axvspan)(
+                at[0] - err[0], at[0] + err[0], color=line.get_color(), alpha=0.15, lw=0)
+    elif style in ("line", "points"):
+        ax.plot(x, y, **(kw if style == "line" else marked))
+    elif style == "step":
+        ax.step(x, y, where="mid", **kw)
+    elif style == "errorbar":
+        ax.errorbar(x, y, yerr=yerr, xerr=xerr, capsize=3, **marked)
+    elif style == "bar":
+        kw.pop("marker", None)
+        steps = np.diff(np.unique(x[np.isfinite(x)]))
+        ax.bar(x, y, width=0.8 * (steps.min() if len(steps) else 1.0), yerr=yerr, capsize=3, **kw)
+    else:
+        raise InputError(f"{s.name}: unknown style '{style}'")
+
+
+def draw_image(fig, ax, img):
+    """Draw the optional `image` group of a figure, with its colour bar."""
+    extent = [get_float(img, k, REQUIRED) for k in ("x0", "x1", "y0", "y1")]
+    im = ax.imshow(get_data(img, "values", ndim=2), origin="lower", extent=extent,
+                   aspect="auto", interpolation="nearest",
+                   cmap=as_str(attr(img, "cmap", "viridis")),
+                   vmin=get_float(img, "vmin"), vmax=get_float(img, "vmax"))
+    fig.colorbar(im, ax=ax, label=as_str(attr(img, "label", "")))
+
+
+def render_figure(item):
+    """Draw a figure item with matplotlib and return its <figure> HTML (PNG inline)."""
+    title, caption = (as_str(attr(item, k)) for k in ("title", "caption"))
+    fig = Figure(figsize=(7, 4.2), dpi=110, layout="tight")
+    ax = fig.add_subplot()
+    ax.set_xlabel(as_str(attr(item, "xlabel")))
+    ax.set_ylabel(as_str(attr(item, "ylabel")))
+    if isinstance(item.get("image"), h5py.Group):
+        draw_image(fig, ax, item["image"])
+    for series in children(item, "series"):
+        draw_series(ax, series)
+    ax.set_xscale(as_str(attr(item, "xscale", "linear")))
+    ax.set_yscale(as_str(attr(item, "yscale", "linear")))
+    for name, set_lim in (("xlim", ax.set_xlim), ("ylim", ax.set_ylim)):
+        lim = get_nums(item, name)
+        if lim is not None and len(lim) != 2:
+            raise InputError(f"{item.name}: attribute '{name}' must have 2 elements")
+        if lim is not None:
+            set_lim(lim[0], lim[1])
+    if get_float(item, "invert_y", 0):
+        ax.invert_yaxis()
+    ax.grid(True, alpha=0.3)
+    if get_float(item, "legend", 1) and ax.get_legend_handles_labels()[0]:
+        ax.legend()
+    buf = io.BytesIO()
+    fig.savefig(buf, format="png", dpi=110)
+    png = base64.b64encode(buf.getvalue()).decode("ascii")
+    return (f'<figure><img src="data:image/png;base64,{png}" alt="{html.escape(title)}">\n'
+            f"<figcaption>{bold_title(title)} {html.escape(caption)}</figcaption></figure>\n")
+
+
+def render_table(item):
+    """Return the <table> HTML of a table item; numeric-looking cells are right-aligned."""
+    columns, cells = ([as_str(v) for v in np.atleast_1d(attr(item, k)).ravel()]
+                      for k in ("columns", "cells"))
+    if not columns or len(cells) % len(columns):
+        raise InputError(f"{item.name}: {len(cells)} cells do not fill rows of "
+                         f"{len(columns)} columns")
+    caption = (bold_title(as_str(attr(item, "title"))) + " "
+               + html.escape(as_str(attr(item, "caption", ""))))
+    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+    rows = ["<tr>" + "".join(f'<td class="num">{html.escape(c)}</td>' if NUMERIC.fullmatch(c)
+                             else f"<td>{html.escape(c)}</td>" for c in cells[i:i + len(columns)])
+            + "</tr>\n" for i in range(0, len(cells), len(columns))]
+    return (f"<table><caption>{caption}</caption>\n<thead><tr>{head}</tr></thead>\n"
+            f"<tbody>\n{''.join(rows)}</tbody></table>\n")
+
+
+def render_item(item):
+    """Return the HTML of one `items/MM` group."""
+    kind = as_str(attr(item, "type"))
+    if kind == "figure":
+        try:
+            return render_figure(item)
+        except (ValueError, TypeError) as err:  # bad colour, cmap, scale, mathtext...
+            raise InputError(f"{item.name}: cannot draw: {first_line(err)}") from None
+    if kind == "table":
+        return render_table(item)
+    if kind == "text":
+        return paragraphs(as_str(attr(item, "text")))
+    raise InputError(f"{item.name}: unknown item type '{kind}'")
+
+
+def render_page(h5):
+    """Return the complete HTML page for an open results file."""
+    fmt = as_str(attr(h5, "format", ""))
+    if fmt != FORMAT:
+        raise InputError(f"format is '{fmt}', expected '{FORMAT}'")
+    title, study, version, build = (html.escape(as_str(attr(h5, k))) for k in
+                                    ("title", "study", "granwave_version", "build_id"))
+    if not isinstance(h5.get("report/sections"), h5py.Group):
+        raise InputError("missing group /report/sections")
+    toc, body = [], []
+    for sec in children(h5, "report/sections"):
+        anchor = "sec-" + sec.name.rsplit("/", 1)[-1]
+        name = html.escape(as_str(attr(sec, "title")))
+        toc.append(f'<li><a href="#{anchor}">{name}</a></li>\n')
+        body.append(f'<section><h2 id="{anchor}">{name}</h2>\n'
+                    + paragraphs(as_str(attr(sec, "text", "")))
+                    + "".join(render_item(item) for item in children(sec, "items"))
+                    + "</section>\n")
+    return (f'<!DOCTYPE html>\n<html lang="en"><head><meta charset="utf-8">\n'
+            f"<title>{title}</title>\n<style>{CSS}</style></head>\n<body>\n<h1>{title}</h1>\n"
+            + paragraphs(as_str(attr(h5, "summary", "")))
+            + f'<p class="provenance">Study <code>{study}</code> &middot; granwave {version}'
+            f" &middot; build {build}</p>\n<nav><h3>Contents</h3><ol>\n{''.join(toc)}</ol></nav>\n"
+            + "".join(body) + f"<script>\n{JS}\n</script>\n</body></html>\n")
+
+
+def write_atomically(path, text):
+    """Write `text` as UTF-8 to `path` via a temporary file in the same directory."""
+    tmp = os.path.join(os.path.dirname(os.path.abspath(path)),
+                       f"{os.path.basename(path)}.tmp-{os.getpid()}")
+    try:
+        with open(tmp, "w", encoding="utf-8") as out:
+            out.write(text)
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+
+
+def main(argv):
+    """Command-line entry point; returns the exit status."""
+    if len(argv) != 3:
+        print("usage: render_report.py RESULTS.h5 OUT.html", file=sys.stderr)
+        return 2
+    src, out = argv[1], argv[2]
+    try:
+        if not os.path.isfile(src):
+            raise InputError("no such file")
+        if not h5py.is_hdf5(src):
+            raise InputError("not an HDF5 file")
+        with h5py.File(src, "r") as h5:
+            page = render_page(h5)
+    except InputError as err:
+        print(f"render_report: {src}: {err}", file=sys.stderr)
+        return 2
+    except Exception as err:  # noqa: BLE001  (one line, never a traceback)
+        print(f"render_report: {src}: {type(err).__name__}: {first_line(err)}", file=sys.stderr)
+        return 1
+    try:
+        write_atomically(out, page)
+    except OSError as err:
+        print(f"render_report: {out}: cannot write: {err.strerror or err}", file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
