@@ -48,21 +48,22 @@ Figure spaceTimeFigure(const Profiles& p, double d, double height, std::string t
 }
 
 Figure profilesAtPhases(const Profiles& p, const std::vector<double>& field, double scale, double d,
-                        const std::vector<double>& phases, int cycle, std::string title,
-                        std::string ylabel, std::string caption) {
+                        const std::vector<double>& phases, std::string title, std::string ylabel,
+                        std::string caption) {
   Figure fig;
   fig.title = std::move(title);
   fig.caption = std::move(caption);
   fig.xlabel = "z / d (lab frame)";
   fig.ylabel = std::move(ylabel);
   for (double ph : phases) {
-    const int k = p.phaseIndex(cycle + ph);
+    const int k = p.phaseIndex(ph);
     std::vector<double> x, y;
     for (int j = 0; j < p.nz; ++j) {
       x.push_back(p.z[j] / d);
       y.push_back(p.at(field, k, j) * scale);
     }
-    fig.series.push_back(lineSeries(x, y, fmt::format("t/T = {:.2f}", p.phase[k] - cycle)));
+    fig.series.push_back(
+        lineSeries(x, y, fmt::format("t/T = {:.2f}", p.phase[k] - std::floor(p.phase[k]))));
   }
   return fig;
 }

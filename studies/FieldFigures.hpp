@@ -15,11 +15,11 @@ namespace granwave {
 Figure spaceTimeFigure(const Profiles& p, double diameter, double container_height,
                        std::string title, std::string caption);
 
-// One line per phase: field(z) * scale against z/d. `phases` are t/T within a cycle; they are
-// taken in cycle `cycle` of the window.
+// One line per phase: field(z) * scale against z/d, at the phases `phases` (t/T within the
+// window; each taken at the nearest sampled phase, labelled by its t/T within its cycle).
 Figure profilesAtPhases(const Profiles& p, const std::vector<double>& field, double scale,
-                        double diameter, const std::vector<double>& phases, int cycle,
-                        std::string title, std::string ylabel, std::string caption);
+                        double diameter, const std::vector<double>& phases, std::string title,
+                        std::string ylabel, std::string caption);
 
 // Centre-of-mass height (relative to the mean plate position, in d) over the window.
 Series centerOfMassSeries(const Profiles& p, double diameter, std::string label,

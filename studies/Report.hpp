@@ -2,6 +2,7 @@
 // The report of a study as plain values: sections of text, figures (series and an optional
 // image) and tables. It is written into results.h5 under /report (ReportWriter) and drawn by
 // studies/report/render_report.py, so the page shows nothing that is not in the file.
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -55,7 +56,8 @@ struct ReportSection {
 
 struct Report {
   std::string title, summary;
-  std::vector<ReportSection> sections;
+  // A deque, so that a section's reference stays valid while later sections are added.
+  std::deque<ReportSection> sections;
   ReportSection& section(std::string title, std::string text = "") {
     sections.push_back({std::move(title), std::move(text), {}});
     return sections.back();

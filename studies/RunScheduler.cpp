@@ -35,15 +35,18 @@ std::vector<std::string> childArguments(const RunRecord& r) {
           "-q"};
 }
 
-// The reason a run failed: its last log line, without the program's prefix.
-std::string lastLogLine(const std::string& path) {
+// The reason a run failed: its error line ("granwave: ..."; stdout and stderr share the log
+// and stdout is flushed last), else its last line.
+std::string failureReason(const std::string& path) {
   std::ifstream in(path);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (!line.empty()) last = line;
   const std::string prefix = "granwave: ";
-  if (last.rfind(prefix, 0) == 0) last = last.substr(prefix.size());
-  return last;
+  std::string line, last, error;
+  while (std::getline(in, line)) {
+    if (line.empty()) continue;
+    last = line;
+    if (line.rfind(prefix, 0) == 0) error = line.substr(prefix.size());
+  }
+  return error.empty() ? last : error;
 }
 
 struct Running {
@@ -116,7 +119,7 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
       }
       r.ok = out.exit_code == 0;
       r.exit_code = out.exit_code;
-      r.message = r.ok ? "" : lastLogLine(r.logPath());
+      r.message = r.ok ? "" : failureReason(r.logPath());
       r.wall = out.wall;
       r.cpu = out.cpu;
       cache.store(r);

@@ -69,12 +69,13 @@ Series frontSeries(const Profiles& p, double d, std::string label, std::string c
   return s;
 }
 
-// The window cycle that holds the strong impact (its front starts near the end of a cycle or
-// just after it), so that t/T = 0.88, 0.90, ... fall on that impact.
-int impactCycle(const ImpactFronts& f, int cycles) {
-  if (f.strong_start < 0 || cycles <= 1) return 0;
-  int c = static_cast<int>(std::lround(f.strong_start)) - 1;
-  return ((c % cycles) + cycles) % cycles;
+// The paper's profile phases (t/T = 0.88, 0.90, ...; its impact starts at 0.88) moved onto
+// this run's strong impact: the first one at the onset of its front, the others at the same
+// spacing, so that the profiles show the same stage of the front whatever the impact phase.
+std::vector<double> phasesFromImpact(const std::vector<double>& paper, double onset) {
+  std::vector<double> out;
+  for (double ph : paper) out.push_back(onset + (ph - paper.front()));
+  return out;
 }
 
 }  // namespace
@@ -204,10 +205,11 @@ void WaveFrontsStudy::paperSection(const RunSet& runs, h5::File& f, Report& repo
   // Temperature profiles at the paper's phases, and the space-time plots.
   ReportSection& prof = report.section(
       "Temperature profiles at the paper's phases (Fig. 3b)",
-      "Row-averaged granular temperature T~g/T0 against height at t/T = 0.88, 0.90, ... in the "
-      "cycle of the strong impact (seed 1), and the same phases of the hydro solver's periodic "
-      "state. The paper's wet layer shows a peak that forms at the plate at t/T = 0.88, "
-      "broadens and travels up within a tenth of a period.");
+      "Row-averaged granular temperature T~g/T0 against height at the paper's phases "
+      "t/T = 0.88, 0.90, ... counted from the onset of the impact front (the paper's impact "
+      "starts at 0.88; ours may start at another phase): particles (seed 1, the strong impact) "
+      "and the hydro solver's periodic state. The paper's wet layer shows a peak that forms at "
+      "the plate, broadens and travels up within a tenth of a period.");
   ReportSection& st = report.section(
       "Density space-time plots (Fig. 5)",
       "Area fraction (grey) against t/T and height, with the T~g-peak fronts (triangles), the "
@@ -219,18 +221,27 @@ void WaveFrontsStudy::paperSection(const RunSet& runs, h5::File& f, Report& repo
     const double Lz = base_[law].container.height;
     auto p = particles(runs, edLabel(law, fmt::format("seed {}", c_.seeds.front())));
     if (p) {
-      const int cycle = impactCycle(impactFronts(p->fronts), p->cycles_per_window);
-      prof.add(profilesAtPhases(*p, p->temperature, 1.0 / T0, d, c_.profile_phases, cycle,
-                                "Particles, " + name + ": T~g(z) / T0", "T~g / T0",
-                                fmt::format("Cycle {} of the {}-cycle window.", cycle, c_.window)));
+      const ImpactFronts imp = impactFronts(p->fronts);
+      const double onset = imp.strong_start >= 0 ? imp.strong_start : c_.profile_phases.front();
+      prof.add(profilesAtPhases(
+          *p, p->temperature, 1.0 / T0, d, phasesFromImpact(c_.profile_phases, onset),
+          "Particles, " + name + ": T~g(z) / T0", "T~g / T0",
+          fmt::format("From the onset of the strong impact's front (t/T = {:.2f} of the "
+                      "{}-cycle window), at the paper's spacing.",
+                      onset, c_.window)));
       st.add(spaceTimeFigure(*p, d, Lz, "Particles, " + name,
                              fmt::format("Layer period {} T.", p->layer_period)));
     }
     auto h = hydro(runs, hydroLabel(law, "velocity"));
     if (h) {
-      prof.add(profilesAtPhases(*h, h->temperature, 1.0 / T0, d, c_.profile_phases, 0,
-                                "Hydro, " + name + ": T(z) / T0", "T / T0",
-                                "Velocity-dependent closure; the first cycle of the window."));
+      const ImpactFronts imp = impactFronts(h->fronts);
+      const double onset = imp.strong_start >= 0 ? imp.strong_start : c_.profile_phases.front();
+      prof.add(profilesAtPhases(
+          *h, h->temperature, 1.0 / T0, d, phasesFromImpact(c_.profile_phases, onset),
+          "Hydro, " + name + ": T(z) / T0", "T / T0",
+          fmt::format("Velocity-dependent closure; from the onset of the impact front (t/T = "
+                      "{:.2f}), at the paper's spacing.",
+                      onset)));
       st.add(spaceTimeFigure(*h, d, Lz, "Hydro, " + name,
                              h->periodic ? fmt::format("Periodic state of period {} T.", h->period)
                                          : std::string("No periodic state was reached.")));
@@ -560,6 +571,12 @@ void WaveFrontsStudy::modelSection(const RunSet& runs, h5::File& f, Report& repo
     for (const Candidate& c : candidates) {
       Measurement m;
       int period = 0;
+      const RunRecord& run = runs.get(c.label);
+      if (!run.ok) {
+        t.rows.push_back(
+            {name, c.description, "failed: " + shortReason(run.message), "–", "–", "no (fails)"});
+        continue;
+      }
       if (c.is_hydro) {
         if (auto h = hydro(runs, c.label)) {
           m = impactFronts(h->fronts).all;
