@@ -92,6 +92,12 @@ class EdSimulation {
   double approachTolerance(double speed_a, double speed_b) const;
   bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
+  // Without friction a flyer moving horizontally into its rider (rx = flyer - rider
+  // horizontally, dvx = flyer - rider velocity) cannot rest on it: attachToRider refuses, so
+  // prediction must not schedule that rest either (it would repeat at one instant forever).
+  bool slidesIntoSupport(double rx, double dvx) const {
+    return cfg_.tangential.friction <= 0.0 && rx * dvx < 0.0;
+  }
   bool pinched(int i, Vec2 away, Motion rigid, int exclude) const;
   void noteCollision(int i, int partner);
   // Books a restitution-law pair impact at normal speed v_n (Observables::pair_impact_*).

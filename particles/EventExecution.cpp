@@ -100,7 +100,7 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
   // velocity, momentum conserved); without it, a particle sliding into its support would
   // graze it at once, so it stays in flight.
   ParticleState& s = p_[i];
-  if (cfg_.tangential.friction <= 0.0 && r_rider_to_i.x * (s.vx - rider.vx) < 0.0) return false;
+  if (slidesIntoSupport(r_rider_to_i.x, s.vx - rider.vx)) return false;
   const double before = particleEnergy(s) + particleEnergy(rider);
   if (cfg_.tangential.friction > 0.0) {
     const double vx = 0.5 * (s.vx + rider.vx);
@@ -166,14 +166,10 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const double tol =
       approachTolerance(std::sqrt(a.vx * a.vx + a.vz * a.vz), std::sqrt(b.vx * b.vx + b.vz * b.vz));
   if (!(vn > tol)) {
-    if (pressed && -vn <= cfg_.rest_velocity) {
+    if (pressed && -vn <= cfg_.rest_velocity &&
+        (a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz}))) {
       ++a.counter;
       ++b.counter;
-      if (a_rides) {
-        attachToRider(j, a, {-rx, -rz});
-      } else {
-        attachToRider(i, b, {rx, rz});
-      }
     }
     predict(i);  // otherwise not approaching after all (round-off): nothing happens
     predict(j);

@@ -214,7 +214,8 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) cons
         const Vec2 n{rx / dist, rz / dist};  // from j to i
         const bool presses = s.motion == Motion::Ballistic ? riderPresses(o, s, n)
                                                            : riderPresses(s, o, {-n.x, -n.z});
-        if (std::abs(rate) <= cfg_.rest_velocity && presses) {
+        // rx * vx is the same whichever of the two is the flyer.
+        if (std::abs(rate) <= cfg_.rest_velocity && presses && !slidesIntoSupport(rx, vx)) {
           if (now_ < best.time) best = {now_, EventKind::Pair, j, q.counter};
           continue;
         }

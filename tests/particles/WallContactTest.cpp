@@ -83,11 +83,13 @@ TEST(WallContact, RestingBallRidesPlateBelowOneGAndNeverLeaves) {
 }
 
 // Regressions: resting layers on the plate once trapped the event loop (same instant,
-// collisions forever) in two configurations, now resolved exactly (docs/physics.md,
+// collisions forever) in three configurations, now resolved exactly (docs/physics.md,
 // "Resting contacts"): a particle pinched between the plate and a plate-carried particle
-// (paper wet scene, seed 3, t = 8.40 s) and two plate-carried particles overlapping by
-// round-off while sliding (wet, Gamma = 7, t = 3.20 s). Both must run through and keep the
-// energy budget.
+// (paper wet scene, seed 3, t = 8.40 s), two plate-carried particles overlapping by
+// round-off while sliding (wet, Gamma = 7, t = 3.20 s), and, without friction, a flyer
+// touching a rider that moves horizontally into it right after an e_n = 0 collision
+// (paper wet scene, mu = 0, t = 0.0969 s): prediction scheduled a rest that execution
+// refuses. All must run through and keep the energy budget.
 TEST(WallContact, WetLayerAtGammaSevenRunsThroughResting) {
   Scene s = test::paperScene(RestitutionKind::Wet, 3.5);
   s.drive.gamma = 7.0;
@@ -101,6 +103,18 @@ TEST(WallContact, WetLayerSeedThreeRunsThroughPinchedContacts) {
   const Observables o0 = sim.snapshot().obs;
   ASSERT_NO_THROW(sim.advanceTo(8.6));
   const Observables o1 = sim.snapshot().obs;
+  EXPECT_NEAR(test::totalEnergy(o1) - test::totalEnergy(o0), o1.wall_work - o1.dissipated_energy,
+              1e-9 * o1.wall_work);
+}
+
+TEST(WallContact, FrictionlessWetLayerRunsThroughFlyersSlidingIntoRiders) {
+  Scene s = test::paperScene(RestitutionKind::Wet, 0.2);
+  s.contact.friction = 0.0;
+  EdSimulation sim = test::makeSimulation(s);
+  const Observables o0 = sim.snapshot().obs;
+  ASSERT_NO_THROW(sim.advanceTo(0.2));
+  const Observables o1 = sim.snapshot().obs;
+  EXPECT_GT(o1.collisions.rests, 0u);
   EXPECT_NEAR(test::totalEnergy(o1) - test::totalEnergy(o0), o1.wall_work - o1.dissipated_energy,
               1e-9 * o1.wall_work);
 }
