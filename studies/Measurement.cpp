@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace granwave {
 
 Measurement combine(const std::vector<Measurement>& values) {
@@ -60,6 +62,9 @@ std::string formatNumber(double v, int digits) {
 std::string format(const Measurement& m, int digits) {
   if (!m.valid()) return "–";
   if (!std::isfinite(m.error)) return formatNumber(m.value, digits);
+  // At least `digits` decimals, more if needed to show two significant digits of the error.
+  if (m.error > 0)
+    digits = std::clamp(1 - static_cast<int>(std::floor(std::log10(m.error))), digits, 5);
   return fmt::format("{:.{}f} ± {:.{}f}", m.value, digits, m.error, digits);
 }
 

@@ -23,7 +23,8 @@ Measurement combine(const std::vector<Measurement>& values);
 // (a - b) / sqrt(sa^2 + sb^2): how many combined sigmas two measurements differ by.
 double sigmaDistance(const Measurement& a, const Measurement& b);
 
-// "1.64 ± 0.45" with `digits` decimals; "–" when invalid.
+// "1.64 ± 0.45" with `digits` decimals, or more (up to 5) so that the error keeps two
+// significant digits; "–" when invalid.
 std::string format(const Measurement& m, int digits = 2);
 std::string formatNumber(double v, int digits = 2);
 

@@ -34,7 +34,7 @@ RunCache::RunCache(std::string directory, std::string build_id)
 RunRecord RunCache::record(const RunRequest& request) const {
   std::string key = request.kind == RunKind::Particles ? "particles\n" : "hydro\n";
   key += sceneToToml(request.scene);
-  if (request.kind == RunKind::Particles)
+  if (request.kind == RunKind::Particles && request.fields)
     key += fmt::format("window={} blocks={}\n", request.window_cycles, request.blocks);
   key += build_id_;
   RunRecord r;

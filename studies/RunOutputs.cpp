@@ -51,6 +51,7 @@ ParticleFields readParticleFields(const std::string& path) {
   const auto impact = f.readDataset<double>("/fronts/from_impact");
   for (std::size_t e = 0; e < speed.size(); ++e) {
     Front fr;
+    fr.first_phase = static_cast<int>(first[e]);
     fr.start = r.phase[static_cast<std::size_t>(first[e])];
     fr.speed = speed[e];
     fr.error = error[e];
@@ -97,6 +98,7 @@ HydroFields readHydroFields(const std::string& path) {
   const auto peak = f.readDataset<double>("/fronts/peak_temperature");
   for (std::size_t e = 0; e < speed.size(); ++e) {
     Front fr;
+    fr.first_phase = static_cast<int>(first[e]);
     fr.start = r.phase[static_cast<std::size_t>(first[e])];
     fr.speed = speed[e];
     fr.error = err[e];
@@ -116,16 +118,19 @@ RunObservables readRunObservables(const std::string& path) {
   r.time = f.readDataset<double>(h5md::observableGroup("center_of_mass_height") + "/time");
   r.com_height = series("center_of_mass_height");
   r.kinetic_energy = series("kinetic_energy");
-  const auto impact = series("pair_impact_energy");
-  const auto loss = series("pair_impact_loss");
-  if (!impact.empty()) {
-    r.pair_impact_energy = impact.back();
-    r.pair_impact_loss = loss.back();
-  }
+  r.pair_impact_energy = series("pair_impact_energy");
+  r.pair_impact_loss = series("pair_impact_loss");
   const auto events = f.readDataset<std::uint64_t>(h5md::observableGroup("events") + "/value");
   if (!events.empty()) r.events = events.back();
   const auto coll = f.readDataset<std::uint64_t>(h5md::kCollisions + "/value");
-  if (coll.size() >= 4) r.pair_collisions = coll[coll.size() - 4];
+  for (std::size_t i = 0; i + 3 < coll.size(); i += 4) {
+    r.pair_count.push_back(static_cast<double>(coll[i]));
+    r.tc_elastic_count.push_back(static_cast<double>(coll[i + 2]));
+  }
+  if (coll.size() >= 4) {
+    r.pair_collisions = coll[coll.size() - 4];
+    r.tc_elastic = coll[coll.size() - 2];
+  }
   return r;
 }
 

@@ -9,6 +9,7 @@
 namespace granwave {
 
 struct Front {
+  int first_phase = 0;                 // index of the first phase in the window
   double start = 0;                    // t/T of the first phase, within the window
   double speed = 0, error = 0;         // m/s, lab frame
   double peak = 0;                     // max T~_g / T0 over the episode
@@ -46,8 +47,9 @@ struct HydroFields : Profiles {
 
 struct RunObservables {
   std::vector<double> time, com_height, kinetic_energy;
-  std::uint64_t events = 0, pair_collisions = 0;
-  double pair_impact_energy = 0, pair_impact_loss = 0;  // final, cumulative
+  std::vector<double> pair_impact_energy, pair_impact_loss;       // cumulative, J
+  std::vector<double> pair_count, tc_elastic_count;               // cumulative, per record
+  std::uint64_t events = 0, pair_collisions = 0, tc_elastic = 0;  // at the end
 };
 
 ParticleFields readParticleFields(const std::string& fields_path);

@@ -13,7 +13,9 @@ struct RunRequest {
   RunKind kind = RunKind::Particles;
   std::string label;  // unique within a study: progress lines, tables, lookup
   Scene scene;        // fully resolved
-  // Particles: live phase-averaged fields with this window (cycles) and blocks.
+  // Particles: live phase-averaged fields (driven scenes) with this window (cycles) and
+  // blocks.
+  bool fields = true;
   int window_cycles = 2;
   int blocks = 5;
 };

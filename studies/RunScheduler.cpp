@@ -22,6 +22,7 @@ namespace {
 std::vector<std::string> childArguments(const RunRecord& r) {
   const RunRequest& q = r.request;
   if (q.kind == RunKind::Hydro) return {"hydro", r.scenePath(), "-o", r.hydroPath(), "-q"};
+  if (!q.fields) return {"simulate", r.scenePath(), "-o", r.runPath(), "-q"};
   return {"simulate",
           r.scenePath(),
           "-o",

@@ -104,6 +104,9 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
   cmd->add_option("-o,--output", opt.output,
                   "Output directory (results.h5, report.html, runs/); default: the study "
                   "file's stem");
+  cmd->add_option("--cache", opt.cache,
+                  "Run cache directory, shared by studies that use the same runs (default: "
+                  "OUTDIR/runs)");
   cmd->add_option("-j,--jobs", opt.jobs, "Runs at a time (default: [study] jobs, else all cores)")
       ->check(CLI::NonNegativeNumber);
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress lines");
@@ -122,7 +125,9 @@ int runStudy(const StudyOptions& opt) {
   std::string outdir = opt.output;
   if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
   std::filesystem::create_directories(outdir);
-  const RunCache cache((std::filesystem::path(outdir) / "runs").string(), buildIdentity());
+  const std::string cache_dir =
+      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  const RunCache cache(cache_dir, buildIdentity());
   const auto t0 = std::chrono::steady_clock::now();
   const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}));
 

@@ -1,6 +1,6 @@
 #pragma once
-// `granwave study STUDY.toml [-o OUTDIR] [-j JOBS] [-q]`: checks the study file, runs what
-// the cache does not hold (OUTDIR/runs), analyses, and writes OUTDIR/results.h5 and
+// `granwave study STUDY.toml [-o OUTDIR] [--cache DIR] [-j JOBS] [-q]`: checks the study file, runs
+// what the cache does not hold (OUTDIR/runs), analyses, and writes OUTDIR/results.h5 and
 // OUTDIR/report.html (drawn by studies/report/render_report.py with Debian's matplotlib).
 #include <string>
 
@@ -13,6 +13,7 @@ namespace granwave {
 struct StudyOptions {
   std::string study_path;
   std::string output;  // default: the study file's stem, in the working directory
+  std::string cache;   // run cache; default OUTDIR/runs (studies may share one)
   int jobs = 0;        // 0 = number of cores
   bool quiet = false;
   bool no_report = false;  // results.h5 only (no Python needed)
