@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# The main job: set up, build, then simulate the paper's default scene (N = 300, f = 10 Hz,
-# Gamma = 4, 15 s), dry and wet, writing out/paper-{dry,wet}.h5 and printing summaries.
+# The main job: set up, build, then run the wave-fronts study (the paper's wave-propagation
+# section from the particles and the continuum; docs/studies.md) and write its report,
+# out/wave-fronts/report.html. Runs are cached in out/runs: a second call, or a call after an
+# interruption, reuses every finished run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 build="${GRANWAVE_BUILD_DIR:-build}"
 mkdir -p out
-for law in dry wet; do
-  echo "== paper scene, $law =="
-  "$build/studies/granwave" simulate "scenes/paper-$law.toml" -o "out/paper-$law.h5"
-done
+"$build/studies/granwave" study studies/wave-fronts.toml -o out/wave-fronts --cache out/runs
+echo "open out/wave-fronts/report.html"

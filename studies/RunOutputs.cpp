@@ -1,5 +1,6 @@
 #include "studies/RunOutputs.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "h5/File.hpp"
@@ -8,9 +9,15 @@
 namespace granwave {
 
 int Profiles::phaseIndex(double t) const {
+  // Circular distance: the window repeats (it holds whole cycles of the periodic state).
+  const double window = phases > 1 ? phases * (phase[1] - phase[0]) : 1.0;
+  auto distance = [&](int p) {
+    const double d = std::fmod(std::abs(phase[p] - t), window);
+    return std::min(d, window - d);
+  };
   int best = 0;
   for (int p = 1; p < phases; ++p)
-    if (std::abs(phase[p] - t) < std::abs(phase[best] - t)) best = p;
+    if (distance(p) < distance(best)) best = p;
   return best;
 }
 

@@ -26,7 +26,7 @@ struct Profiles {
   double at(const std::vector<double>& field, int phase, int j) const {
     return field[static_cast<std::size_t>(phase) * nz + j];
   }
-  // Phase index nearest to t/T within the window.
+  // Phase index nearest to t/T, the window taken as periodic.
   int phaseIndex(double t_over_T) const;
 };
 

@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include "studies/EffectiveRestitutionStudy.hpp"
+#include "studies/MomentumTransferStudy.hpp"
+#include "studies/SoundSpeedStudy.hpp"
 #include "studies/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -19,6 +22,9 @@ const RunRecord& RunSet::get(const std::string& label) const {
 std::unique_ptr<Study> makeStudy(StudyFile& file) {
   const std::string& kind = file.kind();
   if (kind == "wave-fronts") return makeWaveFrontsStudy(file);
+  if (kind == "effective-restitution") return makeEffectiveRestitutionStudy(file);
+  if (kind == "sound-speed") return makeSoundSpeedStudy(file);
+  if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
   file.fail("study", "kind",
             "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
             "momentum-transfer");
