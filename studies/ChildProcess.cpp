@@ -79,10 +79,9 @@ void ChildProcess::signal(int sig) const {
 }
 
 std::string selfExecutable() {
-  std::error_code ec;
-  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (ec) throw std::runtime_error("cannot locate the granwave executable (/proc/self/exe)");
-  return p.string();
+  if (!std::filesystem::exists("/proc/self/exe"))
+    throw std::runtime_error("cannot locate the granwave executable (/proc/self/exe)");
+  return "/proc/self/exe";
 }
 
 }  // namespace granwave

@@ -40,7 +40,8 @@ class ChildProcess {
   double started_ = 0;  // steady clock, s
 };
 
-// Path of the running executable (/proc/self/exe), for starting subcommands of itself.
+// The running executable, for starting subcommands of itself: "/proc/self/exe", which names
+// the very file this process runs even if the build directory is relinked meanwhile.
 std::string selfExecutable();
 
 }  // namespace granwave

@@ -49,6 +49,7 @@ bool RunCache::load(RunRecord& r) const {
   if (!std::filesystem::exists(r.recordPath())) return false;
   try {
     const toml::table t = toml::parse_file(r.recordPath());
+    if (!t["ok"].is_boolean() || !t["exit_code"].is_integer()) return false;  // not a record
     r.ok = t["ok"].value_or(false);
     r.exit_code = static_cast<int>(t["exit_code"].value_or(std::int64_t{-1}));
     r.message = t["message"].value_or(std::string());
@@ -57,6 +58,10 @@ bool RunCache::load(RunRecord& r) const {
   } catch (const toml::parse_error&) {
     return false;  // unreadable record: run again
   }
+  // A record whose outputs were removed since does not count: the run is made again.
+  const bool hydro = r.request.kind == RunKind::Hydro;
+  if (r.ok && !std::filesystem::exists(hydro ? r.hydroPath() : r.runPath())) return false;
+  if (r.ok && !hydro && r.request.fields && !std::filesystem::exists(r.fieldsPath())) return false;
   r.reused = true;
   return true;
 }

@@ -71,6 +71,43 @@ ParticleFields readParticleFields(const std::string& path) {
   return r;
 }
 
+LayerPatterns readLayerPatterns(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  LayerPatterns r;
+  const std::string g = "/patterns";
+  r.period = static_cast<int>(f.readAttribute<std::int64_t>("/parameters", "layer_period"));
+  r.available = f.readAttribute<std::int64_t>(g, "available") != 0;
+  if (!r.available) return r;
+  r.state = f.readStringAttribute(g, "state");
+  r.surface_wave = f.readAttribute<std::int64_t>(g, "surface_wave") != 0;
+  r.surface_wave_mode = static_cast<int>(f.readAttribute<std::int64_t>(g, "surface_wave_mode"));
+  r.surface_wave_amplitude_d = f.readAttribute<double>(g, "surface_wave_amplitude_d");
+  r.kinks = static_cast<int>(f.readAttribute<std::int64_t>(g, "kinks"));
+  r.psi6 = f.readAttribute<double>(g, "mean_abs_psi6");
+  r.mobility_d = f.readAttribute<double>(g, "mean_relative_displacement_d");
+  return r;
+}
+
+Frame readLastFrame(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  const std::string pos = h5md::kPosition + "/value";
+  const h5::Shape shape = f.shape(pos);  // [frames][N][3]
+  Frame fr;
+  if (shape.empty() || shape[0] == 0) return fr;
+  const std::vector<double> v = f.readRows<double>(pos, shape[0] - 1, 1);
+  for (std::size_t i = 0; i + 2 < v.size(); i += 3) {
+    fr.x.push_back(v[i]);
+    fr.z.push_back(v[i + 2]);
+  }
+  const auto plate = f.readDataset<double>(h5md::observableGroup("plate_height") + "/value");
+  const auto step = f.readDataset<std::int64_t>(h5md::kPosition + "/step");
+  const auto obs_step =
+      f.readDataset<std::int64_t>(h5md::observableGroup("plate_height") + "/step");
+  for (std::size_t i = 0; i < obs_step.size(); ++i)
+    if (obs_step[i] == step.back()) fr.plate = plate[i];
+  return fr;
+}
+
 HydroFields readHydroFields(const std::string& path) {
   const h5::File f = h5::File::openReadOnly(path);
   HydroFields r;

@@ -52,7 +52,24 @@ struct RunObservables {
   std::uint64_t events = 0, pair_collisions = 0, tc_elastic = 0;  // at the end
 };
 
+// The live classification of a particle run (FIELDS.h5 /patterns, docs/classification.md).
+struct LayerPatterns {
+  bool available = false;
+  std::string state;  // "crystal", "amorphous", "liquid-like"
+  bool surface_wave = false;
+  int surface_wave_mode = 0, kinks = 0, period = 0;
+  double surface_wave_amplitude_d = 0, psi6 = 0, mobility_d = 0;
+};
+
+// Particle positions of one recorded frame (lab frame, m).
+struct Frame {
+  std::vector<double> x, z;
+  double plate = 0;
+};
+
 ParticleFields readParticleFields(const std::string& fields_path);
+LayerPatterns readLayerPatterns(const std::string& fields_path);
+Frame readLastFrame(const std::string& run_path);
 HydroFields readHydroFields(const std::string& hydro_path);
 RunObservables readRunObservables(const std::string& run_path);
 

@@ -96,6 +96,7 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
         scene << sceneToToml(r.request.scene);
       }
       std::filesystem::remove(r.logPath());
+      std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
       running.push_back({static_cast<std::size_t>(&r - records.data()),
                          ChildProcess(exe, childArguments(r), r.logPath())});
     }

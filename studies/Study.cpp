@@ -5,6 +5,7 @@
 #include "studies/EffectiveRestitutionStudy.hpp"
 #include "studies/MomentumTransferStudy.hpp"
 #include "studies/SoundSpeedStudy.hpp"
+#include "studies/StabilityStudy.hpp"
 #include "studies/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -24,10 +25,11 @@ std::unique_ptr<Study> makeStudy(StudyFile& file) {
   if (kind == "wave-fronts") return makeWaveFrontsStudy(file);
   if (kind == "effective-restitution") return makeEffectiveRestitutionStudy(file);
   if (kind == "sound-speed") return makeSoundSpeedStudy(file);
+  if (kind == "stability") return makeStabilityStudy(file);
   if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
   file.fail("study", "kind",
             "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
-            "momentum-transfer");
+            "momentum-transfer, stability");
 }
 
 }  // namespace granwave

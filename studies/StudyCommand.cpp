@@ -6,10 +6,12 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <thread>
 
 #include "h5/AtomicFile.hpp"
 #include "studies/ChildProcess.hpp"
+#include "studies/InterruptFlag.hpp"
 #include "studies/ReportWriter.hpp"
 #include "studies/RunCache.hpp"
 #include "studies/RunOutputs.hpp"
@@ -127,7 +129,8 @@ int runStudy(const StudyOptions& opt) {
   std::filesystem::create_directories(outdir);
   const std::string cache_dir =
       opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
-  const RunCache cache(cache_dir, buildIdentity());
+  const std::string build_id = buildIdentity();
+  const RunCache cache(cache_dir, build_id);
   const auto t0 = std::chrono::steady_clock::now();
   const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}));
 
@@ -146,9 +149,12 @@ int runStudy(const StudyOptions& opt) {
     f.writeStringAttribute("/", "title", report.title);
     f.writeStringAttribute("/", "summary", report.summary);
     f.writeStringAttribute("/", "granwave_version", kVersion);
-    f.writeStringAttribute("/", "build_id", buildIdentity());
+    f.writeStringAttribute("/", "build_id", build_id);
     f.writeStringDataset("/study_file", file.text());
     writeReport(f, report);
+    // An interrupt during the analysis: nothing is committed; the runs stay cached.
+    if (installInterruptFlag().load())
+      throw StudyInterrupted("interrupted during the analysis; run the same command again");
     af.commit();
   }
   if (!opt.no_report)
@@ -157,7 +163,9 @@ int runStudy(const StudyOptions& opt) {
   fmt::print("study           {} ({})\n", opt.study_path, file.kind());
   fmt::print("results         {}\n", results);
   if (!opt.no_report) fmt::print("report          {}\n", html);
-  fmt::print("wall time       {:.1f} s ({} runs, {} jobs)\n", wall, runs.all().size(), jobs);
+  std::set<std::string> distinct;
+  for (const RunRecord& r : runs.all()) distinct.insert(r.stem);
+  fmt::print("wall time       {:.1f} s ({} runs, {} jobs)\n", wall, distinct.size(), jobs);
   return 0;
 }
 

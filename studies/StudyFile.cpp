@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 namespace granwave {
@@ -26,7 +27,7 @@ StudyFile StudyFile::load(const std::string& path) {
   if (f.kind_.empty())
     throw StudyError(
         fmt::format("{}: [study] kind is missing; valid kinds: wave-fronts, "
-                    "sound-speed, effective-restitution, momentum-transfer",
+                    "sound-speed, effective-restitution, momentum-transfer, stability",
                     path));
   return f;
 }
@@ -58,14 +59,18 @@ double StudyFile::number(std::string_view section, std::string_view key, double 
 int StudyFile::integer(std::string_view section, std::string_view key, int fallback) {
   const toml::node* n = find(section, key);
   if (!n) return fallback;
-  if (n->is_integer()) return static_cast<int>(*n->value<std::int64_t>());
-  fail(section, key, "expected an integer");
+  if (n->is_integer()) {
+    const std::int64_t v = *n->value<std::int64_t>();
+    if (v >= std::numeric_limits<int>::min() && v <= std::numeric_limits<int>::max())
+      return static_cast<int>(v);
+  }
+  fail(section, key, "expected an integer (32-bit)");
 }
 
 bool StudyFile::boolean(std::string_view section, std::string_view key, bool fallback) {
   const toml::node* n = find(section, key);
   if (!n) return fallback;
-  if (auto v = n->value<bool>()) return *v;
+  if (n->is_boolean()) return *n->value<bool>();
   fail(section, key, "expected true or false");
 }
 
@@ -100,8 +105,11 @@ std::vector<int> StudyFile::integers(std::string_view section, std::string_view 
   if (!a || a->empty()) fail(section, key, "expected a non-empty array of integers");
   std::vector<int> out;
   for (const toml::node& e : *a) {
-    if (!e.is_integer()) fail(section, key, "expected a non-empty array of integers");
-    out.push_back(static_cast<int>(*e.value<std::int64_t>()));
+    const std::int64_t v = e.is_integer() ? *e.value<std::int64_t>() : 0;
+    if (!e.is_integer() || v < std::numeric_limits<int>::min() ||
+        v > std::numeric_limits<int>::max())
+      fail(section, key, "expected a non-empty array of (32-bit) integers");
+    out.push_back(static_cast<int>(v));
   }
   return out;
 }

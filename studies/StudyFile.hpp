@@ -1,5 +1,5 @@
 #pragma once
-// A study file (TOML; docs/studies.md): [study] kind, title, jobs, then the sections of its
+// A study file (TOML; docs/studies.md): [study] kind and jobs, then the sections of its
 // kind. Every key read through this class is recorded, so that after a study has read its
 // keys any key left over is reported as unknown, with the valid ones, before anything runs.
 #include <toml++/toml.h>
