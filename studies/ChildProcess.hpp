@@ -18,8 +18,9 @@ struct ChildOutcome {
 
 class ChildProcess {
  public:
-  // Starts `program args...` with stdin from /dev/null and stdout+stderr appended to log.
-  // Throws std::runtime_error if the process cannot be started.
+  // Starts `program args...` with stdin from /dev/null and stdout+stderr appended to log; the
+  // child gets SIGTERM if this process dies. Throws std::runtime_error if fork fails (an exec
+  // failure shows as exit code 127).
   ChildProcess(const std::string& program, const std::vector<std::string>& args,
                const std::string& log_path);
   ChildProcess(ChildProcess&& other) noexcept;

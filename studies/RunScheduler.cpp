@@ -14,10 +14,9 @@
 #include "scene/SceneParser.hpp"
 #include "studies/ChildProcess.hpp"
 #include "studies/InterruptFlag.hpp"
+#include "studies/RemoteWorkers.hpp"
 
 namespace granwave {
-
-namespace {
 
 std::vector<std::string> childArguments(const RunRecord& r) {
   const RunRequest& q = r.request;
@@ -35,6 +34,14 @@ std::vector<std::string> childArguments(const RunRecord& r) {
           std::to_string(q.blocks),
           "-q"};
 }
+
+std::vector<RunRecord> planRecords(const std::vector<RunRequest>& requests, const RunCache& cache) {
+  std::vector<RunRecord> records;
+  for (const RunRequest& q : requests) records.push_back(cache.record(q));
+  return records;
+}
+
+namespace {
 
 // The reason a run failed: its error line ("granwave: ..."; stdout and stderr share the log
 // and stdout is flushed last), else its last line.
@@ -58,7 +65,7 @@ struct Running {
 }  // namespace
 
 std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const RunCache& cache,
-                              const SchedulerOptions& opt) {
+                              const SchedulerOptions& opt, RemoteWorkers* remote) {
   std::vector<RunRecord> records;
   std::map<std::string, std::size_t> first_of_stem;
   std::deque<std::size_t> pending;
@@ -71,30 +78,67 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
   }
   const std::size_t reused = first_of_stem.size() - pending.size();
   const std::size_t total = pending.size();
+  const int workers = remote ? remote->idle() : 0;
   if (!opt.quiet)
-    fmt::print(stderr, "granwave study: {} runs, {} reused from {}, {} to do ({} at a time)\n",
-               first_of_stem.size(), reused, cache.directory(), total, opt.jobs);
+    fmt::print(stderr, "granwave study: {} runs, {} reused from {}, {} to do ({} at a time{})\n",
+               first_of_stem.size(), reused, cache.directory(), total, opt.jobs,
+               workers ? fmt::format(" here, 1 on each of {} more ranks", workers) : "");
 
   const std::string exe = selfExecutable();
   const auto& interrupt = installInterruptFlag();
   std::list<Running> running;  // list: children are not move-assignable
+  auto writeScene = [](const RunRecord& r) {
+    std::ofstream scene(r.scenePath());
+    scene << sceneToToml(r.request.scene);
+  };
+  // One finished run (local or remote): record it, unless it was interrupted.
   std::size_t done = 0;
-  while (!pending.empty() || !running.empty()) {
+  auto finish = [&](RunRecord& r, const ChildOutcome& out) {
+    if (out.exit_code == 130 || out.exit_code == 128 + SIGINT || out.exit_code == 128 + SIGTERM ||
+        out.exit_code == 128 + SIGKILL) {
+      // Interrupted or killed from outside: not a result, so nothing is cached and the
+      // next invocation runs it again.
+      r.ok = false;
+      r.exit_code = out.exit_code;
+      r.message = "interrupted (not cached)";
+      return;
+    }
+    r.ok = out.exit_code == 0;
+    r.exit_code = out.exit_code;
+    r.message = r.ok ? "" : failureReason(r.logPath());
+    r.wall = out.wall;
+    r.cpu = out.cpu;
+    cache.store(r);
+    ++done;
+    if (!opt.quiet)
+      fmt::print(stderr, "granwave study: [{:>3}/{}] {:<44} {:7.1f} s{}\n", done, total,
+                 r.request.label, out.wall, r.ok ? "" : "  FAILED: " + r.message);
+  };
+  while (!pending.empty() || !running.empty() || (remote && remote->busy() > 0)) {
     if (interrupt.load()) {
       for (Running& r : running) r.child.signal(SIGINT);
       running.clear();  // destructors wait for the children
+      if (remote && remote->session().size() > 1) {
+        fmt::print(stderr, "granwave: interrupted; finished runs are kept in {}\n",
+                   cache.directory());
+        remote->session().abort(130);  // the workers' children get SIGTERM as they die
+      }
       throw StudyInterrupted(fmt::format(
           "interrupted: {} of {} runs finished and kept in {}; run the same command again to "
           "resume",
           done, total, cache.directory()));
     }
+    while (!pending.empty() && remote && remote->idle() > 0) {
+      const std::size_t i = pending.front();
+      pending.pop_front();
+      writeScene(records[i]);
+      std::filesystem::remove(records[i].runPath() + ".interrupted");
+      remote->dispatch(i);
+    }
     while (!pending.empty() && static_cast<int>(running.size()) < opt.jobs) {
       RunRecord& r = records[pending.front()];
       pending.pop_front();
-      {
-        std::ofstream scene(r.scenePath());
-        scene << sceneToToml(r.request.scene);
-      }
+      writeScene(r);
       std::filesystem::remove(r.logPath());
       std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
       running.push_back({static_cast<std::size_t>(&r - records.data()),
@@ -110,28 +154,17 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
       RunRecord& r = records[it->index];
       it = running.erase(it);
       reaped = true;
-      if (out.exit_code == 130 || out.exit_code == 128 + SIGINT || out.exit_code == 128 + SIGTERM ||
-          out.exit_code == 128 + SIGKILL) {
-        // Interrupted or killed from outside: not a result, so nothing is cached and the
-        // next invocation runs it again.
-        r.ok = false;
-        r.exit_code = out.exit_code;
-        r.message = "interrupted (not cached)";
-        continue;
-      }
-      r.ok = out.exit_code == 0;
-      r.exit_code = out.exit_code;
-      r.message = r.ok ? "" : failureReason(r.logPath());
-      r.wall = out.wall;
-      r.cpu = out.cpu;
-      cache.store(r);
-      ++done;
-      if (!opt.quiet)
-        fmt::print(stderr, "granwave study: [{:>3}/{}] {:<44} {:7.1f} s{}\n", done, total,
-                   r.request.label, out.wall, r.ok ? "" : "  FAILED: " + r.message);
+      finish(r, out);
+    }
+    std::size_t index = 0;
+    ChildOutcome remote_out;
+    while (remote && remote->poll(index, remote_out)) {
+      reaped = true;
+      finish(records[index], remote_out);
     }
     if (!reaped) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
+  if (remote) remote->stopAll();
   // Duplicates take the outcome of their first occurrence.
   for (RunRecord& r : records) {
     const RunRecord& first = records[first_of_stem[r.stem]];

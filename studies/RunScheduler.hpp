@@ -17,11 +17,20 @@ class StudyInterrupted : public std::runtime_error {
 };
 
 struct SchedulerOptions {
-  int jobs = 1;
+  int jobs = 1;  // local runs at a time
   bool quiet = false;
 };
 
+class RemoteWorkers;
+
+// `remote` (may be null): worker ranks that take runs too (RemoteWorkers.hpp).
 std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const RunCache& cache,
-                              const SchedulerOptions& options);
+                              const SchedulerOptions& options, RemoteWorkers* remote = nullptr);
+
+// The records of a plan in request order without running anything (worker ranks).
+std::vector<RunRecord> planRecords(const std::vector<RunRequest>& requests, const RunCache& cache);
+
+// The command line of the child process that makes a run.
+std::vector<std::string> childArguments(const RunRecord& record);
 
 }  // namespace granwave

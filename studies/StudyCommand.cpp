@@ -12,6 +12,7 @@
 #include "h5/AtomicFile.hpp"
 #include "studies/ChildProcess.hpp"
 #include "studies/InterruptFlag.hpp"
+#include "studies/RemoteWorkers.hpp"
 #include "studies/ReportWriter.hpp"
 #include "studies/RunCache.hpp"
 #include "studies/RunOutputs.hpp"
@@ -115,12 +116,14 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
   cmd->add_flag("--no-report", opt.no_report, "Write results.h5 only, no report.html");
 }
 
-int runStudy(const StudyOptions& opt) {
+int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   StudyFile file = StudyFile::load(opt.study_path);
   const std::unique_ptr<Study> study = makeStudy(file);
   int jobs = file.integer("study", "jobs", 0);
   file.rejectUnknownKeys();
   if (opt.jobs > 0) jobs = opt.jobs;
+  // Under mpirun each rank is meant to have a core of its own: one run at a time per rank.
+  if (jobs <= 0 && mpi.size() > 1) jobs = 1;
   if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const std::vector<RunRequest> plan = study->plan();
 
@@ -131,8 +134,13 @@ int runStudy(const StudyOptions& opt) {
       opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
   const std::string build_id = buildIdentity();
   const RunCache cache(cache_dir, build_id);
+  if (mpi.rank() > 0) {
+    workerLoop(mpi, planRecords(plan, cache), &childArguments);
+    return 0;
+  }
   const auto t0 = std::chrono::steady_clock::now();
-  const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}));
+  RemoteWorkers remote(mpi);
+  const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}, mpi.size() > 1 ? &remote : nullptr));
 
   const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
   const std::string html = (std::filesystem::path(outdir) / "report.html").string();
@@ -165,7 +173,8 @@ int runStudy(const StudyOptions& opt) {
   if (!opt.no_report) fmt::print("report          {}\n", html);
   std::set<std::string> distinct;
   for (const RunRecord& r : runs.all()) distinct.insert(r.stem);
-  fmt::print("wall time       {:.1f} s ({} runs, {} jobs)\n", wall, distinct.size(), jobs);
+  fmt::print("wall time       {:.1f} s ({} runs, {} jobs{})\n", wall, distinct.size(), jobs,
+             mpi.size() > 1 ? fmt::format(" + {} worker ranks", mpi.size() - 1) : "");
   return 0;
 }
 

@@ -19,7 +19,11 @@ struct StudyOptions {
   bool no_report = false;  // results.h5 only (no Python needed)
 };
 
+class MpiSession;
+
 void addStudyCommand(CLI::App& app, StudyOptions& options);
-int runStudy(const StudyOptions& options);
+// Under mpirun, rank 0 coordinates and writes the outputs; the other ranks run what they are
+// given and return 0 (RemoteWorkers.hpp).
+int runStudy(const StudyOptions& options, const MpiSession& mpi);
 
 }  // namespace granwave

@@ -12,6 +12,7 @@
 #include "scene/SceneParser.hpp"
 #include "studies/FieldsCommand.hpp"
 #include "studies/HydroCommand.hpp"
+#include "studies/RemoteWorkers.hpp"
 #include "studies/RunScheduler.hpp"
 #include "studies/SimulateCommand.hpp"
 #include "studies/StudyCommand.hpp"
@@ -19,6 +20,8 @@
 #include "studies/Version.hpp"
 
 int main(int argc, char** argv) {
+  // Before anything else: MPI may rewrite argc/argv. A no-op outside mpirun.
+  granwave::MpiSession mpi(argc, argv);
   CLI::App app{
       "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
   app.set_version_flag("--version", std::string("granwave ") + granwave::kVersion);
@@ -39,7 +42,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
     if (app.got_subcommand("fields")) return granwave::runFields(fields);
     if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
-    if (app.got_subcommand("study")) return granwave::runStudy(study);
+    if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
   } catch (const granwave::StudyInterrupted& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 130;
