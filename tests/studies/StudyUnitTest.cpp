@@ -423,6 +423,10 @@ TEST_F(StudyRunCacheTest, StoredRecordLoadsBackWithItsOutcomeAndFailureMessage) 
   r.message.clear();
   cache.store(r);  // replaces the record
   granwave::RunRecord again = cache.record(particleRequest());
+  // A successful record counts only while the run's outputs exist.
+  EXPECT_FALSE(cache.load(again));
+  std::ofstream(r.runPath()) << "run";
+  std::ofstream(r.fieldsPath()) << "fields";
   ASSERT_TRUE(cache.load(again));
   EXPECT_TRUE(again.ok);
   EXPECT_EQ(again.exit_code, 0);
