@@ -129,7 +129,7 @@ TEST_P(BouncingBall, FollowsTheCompletelyInelasticBouncingBallMap) {
 }
 
 INSTANTIATE_TEST_SUITE_P(PeriodOneBelowDoubling, BouncingBall,
-                         ::testing::Values(std::pair{2.5, 1}, std::pair{3.0, 1},
+                         ::testing::Values(std::pair{2.5, 1}, std::pair{3.0, 1}, std::pair{3.5, 1},
                                            std::pair{3.6, 1}));
 INSTANTIATE_TEST_SUITE_P(PeriodTwoUpTo6p59, BouncingBall,
                          ::testing::Values(std::pair{3.9, 2}, std::pair{4.0, 2}, std::pair{5.0, 2},
