@@ -255,13 +255,15 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
         w_all += w;
         wt_all += wt;
       }
-      t_layer.push_back(wt_all / w_all / p.T0);
-      t_lo.push_back(lo / p.T0);
-      t_hi.push_back(hi / p.T0);
+      if (w_all > 0 && hi > 0) {
+        t_layer.push_back(wt_all / w_all / p.T0);
+        t_lo.push_back(lo / p.T0);
+        t_hi.push_back(hi / p.T0);
+      }
       if (!fields) fields = std::move(p);
     }
     const Measurement e_stats = combine(stats);
-    double layer_T = 0;
+    double layer_T = t_layer.empty() ? NAN : 0.0;
     for (double x : t_layer) layer_T += x / static_cast<double>(t_layer.size());
     const double layer_lo = t_lo.empty() ? NAN : *std::min_element(t_lo.begin(), t_lo.end());
     const double layer_hi = t_hi.empty() ? NAN : *std::max_element(t_hi.begin(), t_hi.end());
@@ -338,6 +340,7 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
     Measurement e_fit;
     double chi2_dof = NAN;
     std::vector<double> fe, fchi;
+    std::vector<int> fdof;
     if (fields) {
       const ParticleFields& p = *fields;
       const int M = p.phases / p.cycles_per_window, Z = p.nz;
@@ -367,6 +370,7 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
         const int cycles = h.periodic ? h.period : 2;
         if (h.nz != Z || h.phases != cycles * M) continue;
         double chi2 = 0;
+        int used = 0;  // cells where either side has particles (empty rows carry no information)
         for (int k = 0; k < M; ++k)
           for (int j = 0; j < Z; ++j) {
             double v = 0;
@@ -377,10 +381,13 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
             }
             v /= cycles;
             const std::size_t i = static_cast<std::size_t>(k) * Z + j;
+            if (!(v > 0 || ed[i] > 0)) continue;
             chi2 += (v - ed[i]) * (v - ed[i]) / var[i];
+            ++used;
           }
         fe.push_back(e);
         fchi.push_back(chi2);
+        fdof.push_back(std::max(1, used - 1));
       }
       const auto best = std::min_element(fchi.begin(), fchi.end());
       if (best != fchi.end() && fe.size() >= 3) {
@@ -392,8 +399,7 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
         const double den = (x0 - x1) * (x0 - x2) * (x1 - x2);
         const double A = (x2 * (y1 - y0) + x1 * (y0 - y2) + x0 * (y2 - y1)) / den;
         const double B = (x2 * x2 * (y0 - y1) + x1 * x1 * (y2 - y0) + x0 * x0 * (y1 - y2)) / den;
-        const double dof = static_cast<double>(M) * Z - 1;
-        chi2_dof = *best / dof;
+        chi2_dof = *best / fdof[static_cast<std::size_t>(best - fchi.begin())];
         if (A > 0) {
           const double xmin = std::clamp(-B / (2 * A), fe.front(), fe.back());
           // Delta chi^2 = 1, scaled by sqrt(chi^2/dof) when the model misses the data.
@@ -419,11 +425,15 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
     // Can one constant describe the law? The three estimates must agree within 2 sigma.
     std::vector<Measurement> three{e_cooling, e_stats, e_fit};
     double worst = 0;
+    int compared = 0;
     for (std::size_t a = 0; a < 3; ++a)
       for (std::size_t b = a + 1; b < 3; ++b) {
         const double z = sigmaDistance(three[a], three[b]);
-        if (std::isfinite(z)) worst = std::max(worst, std::abs(z));
+        if (!std::isfinite(z)) continue;
+        worst = std::max(worst, std::abs(z));
+        ++compared;
       }
+    if (compared == 0) worst = NAN;
     const double theory_lo = std::sqrt(std::max(0.0, 1.0 - law_closure.phiW(layer_lo * theta0)));
     const double theory_hi = std::sqrt(std::max(0.0, 1.0 - law_closure.phiW(layer_hi * theta0)));
     putValue(f, grp, "largest_disagreement_sigma", worst);
@@ -431,8 +441,11 @@ void EffectiveRestitutionStudy::analyse(const RunSet& runs, h5::File& f, Report&
         "{} law: the three estimates {} (largest disagreement {:.1f} sigma); over the layer's "
         "temperature range T/T0 = {:.3f} to {:.3f} the theory's e_eff runs from {:.3f} to "
         "{:.3f}. ",
-        kLaw[law], worst <= 2 ? "agree" : "disagree", worst, layer_lo, layer_hi, theory_lo,
-        theory_hi);
+        kLaw[law],
+        compared == 0 ? "cannot be compared (runs failed)"
+        : worst <= 2  ? "agree"
+                      : "disagree",
+        worst, layer_lo, layer_hi, theory_lo, theory_hi);
   }
   intro.add(std::move(t));
   intro.add(std::move(fig));

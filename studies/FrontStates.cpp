@@ -50,8 +50,8 @@ FrontStates frontStates(const ParticleFields& p, const std::vector<int>& phases,
       (side == 0 ? n_a : n_b) += 1;
     }
   }
-  if (n_a > 0) s.ahead = {s.ahead.nu / n_a, s.ahead.T / n_a, s.ahead.uz / n_a};
-  if (n_b > 0) s.behind = {s.behind.nu / n_b, s.behind.T / n_b, s.behind.uz / n_b};
+  if (n_a > 0) s.ahead = {s.ahead.nu / n_a, s.ahead.T / n_a, s.ahead.uz / n_a, true};
+  if (n_b > 0) s.behind = {s.behind.nu / n_b, s.behind.T / n_b, s.behind.uz / n_b, true};
   s.phases = static_cast<int>(phases.size());
   return s;
 }

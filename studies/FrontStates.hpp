@@ -10,6 +10,7 @@ namespace granwave {
 
 struct GasSample {
   double nu = 0, T = 0, uz = 0;  // area fraction, J, m/s (lab)
+  bool valid = false;            // some row on that side had particles
 };
 
 struct FrontStates {

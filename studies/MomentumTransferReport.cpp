@@ -789,8 +789,11 @@ void MomentumTransferStudy::analyse(const RunSet& runs, h5::File& f, Report& rep
       "single collisions; the ratio of phase-averaged flows that r_x measures also depends on "
       "the collective state of each layer, which differs here as described above.",
       format(a.r_all_rows), format(a.r_aligned));
-  report.section("What the runs give",
-                 verdict + " " + direction + "\n\n" + why + "\n\n" + noise + "\n\n" + sensitivity);
+  // The explanation of docs/fields.md applies only when these runs show what it explains.
+  const bool below_one = a.r.valid() && a.r.value < 1;
+  report.section("What the runs give", verdict + " " + direction + "\n\n" +
+                                           (below_one ? why + "\n\n" : std::string()) + noise +
+                                           "\n\n" + sensitivity);
   report.summary = verdict + " " + direction;
 }
 

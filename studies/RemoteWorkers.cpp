@@ -89,11 +89,16 @@ void workerLoop(const MpiSession&, const std::vector<RunRecord>& records,
     long long i = -1;
     MPI_Recv(&i, 1, MPI_LONG_LONG, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     if (i < 0) return;
-    const RunRecord& r = records.at(static_cast<std::size_t>(i));
-    std::filesystem::remove(r.logPath());
-    ChildProcess child(exe, arguments(r), r.logPath());
     ChildOutcome out;
-    while (!child.poll(out)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    out.exit_code = 127;  // reported if the run cannot even be started
+    try {
+      const RunRecord& r = records.at(static_cast<std::size_t>(i));
+      std::filesystem::remove(r.logPath());
+      ChildProcess child(exe, arguments(r), r.logPath());
+      while (!child.poll(out)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    } catch (const std::exception&) {
+      // Always answer: rank 0 waits for every run it handed out.
+    }
     const double msg[4] = {static_cast<double>(i), static_cast<double>(out.exit_code), out.wall,
                            out.cpu};
     MPI_Send(msg, 4, MPI_DOUBLE, 0, kTagDone, MPI_COMM_WORLD);

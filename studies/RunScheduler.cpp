@@ -94,13 +94,16 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
   // One finished run (local or remote): record it, unless it was interrupted.
   std::size_t done = 0;
   auto finish = [&](RunRecord& r, const ChildOutcome& out) {
-    if (out.exit_code == 130 || out.exit_code == 128 + SIGINT || out.exit_code == 128 + SIGTERM ||
-        out.exit_code == 128 + SIGKILL) {
-      // Interrupted or killed from outside: not a result, so nothing is cached and the
-      // next invocation runs it again.
+    // Only the outcomes the same scene and build would repeat are results and cached: success
+    // (0), a deterministic error (1: e.g. no steady cycles; 2: scene), collapse (3), solver
+    // failure (4). Anything else (interrupted, killed, could not start) is not cached.
+    if (out.exit_code < 0 || out.exit_code > 4) {
       r.ok = false;
       r.exit_code = out.exit_code;
-      r.message = "interrupted (not cached)";
+      r.message =
+          out.exit_code == 130 || out.exit_code == 128 + SIGINT || out.exit_code == 128 + SIGTERM
+              ? "interrupted (not cached)"
+              : fmt::format("did not finish: exit code {} (not cached)", out.exit_code);
       return;
     }
     r.ok = out.exit_code == 0;

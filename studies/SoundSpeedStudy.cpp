@@ -46,7 +46,7 @@ std::array<double, kTheories> predictions(const FrontStates& s, double mass,
   std::array<double, kTheories> p;
   p.fill(NAN);
   const double theta = s.ahead.T / mass, nu = s.ahead.nu;
-  if (!(nu > 0 && nu < 1 && theta > 0)) return p;
+  if (!s.ahead.valid || !s.behind.valid || !(nu > 0 && nu < 1 && theta > 0)) return p;
   p[0] = hydro::adiabaticSoundSpeed(nu, theta, law);
   p[1] = hydro::isothermalSoundSpeed(nu, theta, law);
   const double up = s.behind.uz - s.ahead.uz;  // piston: the compacted layer behind
@@ -176,12 +176,18 @@ void SoundSpeedStudy::analyse(const RunSet& runs, h5::File& f, Report& report) c
           if (!fr.from_impact || !std::isfinite(fr.speed)) continue;
           const std::vector<int> phases = episodePhases(p, fr.first_phase);
           const FrontStates st = frontStates(p, phases, c_.rows, c_.gap);
+          if (!st.ahead.valid || !st.behind.valid) {
+            states.rows.push_back({name, formatNumber(fr.start), "–", "–", "–", "–", "–", "–",
+                                   "no state: the front reaches the edge of the layer (failed to "
+                                   "sample)"});
+            continue;
+          }
           std::vector<std::array<double, kTheories>> per_block;
           std::vector<double> ua_block;
           for (int b = 0; b < p.blocks; ++b) {
             const FrontStates sb = frontStates(p, phases, c_.rows, c_.gap, b);
             per_block.push_back(predictions(sb, mass, closure));
-            ua_block.push_back(sb.ahead.uz);
+            ua_block.push_back(sb.ahead.valid ? sb.ahead.uz : NAN);
           }
           auto spread = [](const std::vector<double>& v) -> double {
             double m = 0, s2 = 0;

@@ -141,6 +141,19 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   const auto t0 = std::chrono::steady_clock::now();
   RemoteWorkers remote(mpi);
   const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}, mpi.size() > 1 ? &remote : nullptr));
+  // A run that did not finish (killed, could not start) is not a result: no results.h5.
+  int unfinished = 0;
+  std::string example;
+  for (const RunRecord& r : runs.all())
+    if (!r.ok && r.message.find("(not cached)") != std::string::npos) {
+      ++unfinished;
+      if (example.empty()) example = r.request.label + ": " + r.message;
+    }
+  if (unfinished > 0)
+    throw std::runtime_error(fmt::format(
+        "{} run(s) did not finish ({}); finished runs are kept in {}: run the same command "
+        "again",
+        unfinished, example, cache_dir));
 
   const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
   const std::string html = (std::filesystem::path(outdir) / "report.html").string();

@@ -76,13 +76,16 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
                fmt::format("hydro.rtol={}", g(rtol))},
               0);
     }
-    // Simpler models than the full particle model.
-    const std::string seed = fmt::format("run.seed={}", c_.seeds.front());
-    add(RunKind::Particles, law, edLabel(law, "no rotation"), {"contact.friction=0", seed},
-        c_.duration);
-    add(RunKind::Particles, law, edLabel(law, "constant e"),
-        {"contact.restitution=\"constant\"", fmt::format("contact.e={:.6f}", e_eff_[law]), seed},
-        c_.duration);
+    // Simpler models than the full particle model, with the same seeds (the wet layer's
+    // period is bistable: one seed would not say which period a model gives).
+    for (int sd : c_.seeds) {
+      const std::string seed = fmt::format("run.seed={}", sd);
+      add(RunKind::Particles, law, edLabel(law, fmt::format("no rotation seed {}", sd)),
+          {"contact.friction=0", seed}, c_.duration);
+      add(RunKind::Particles, law, edLabel(law, fmt::format("constant e seed {}", sd)),
+          {"contact.restitution=\"constant\"", fmt::format("contact.e={:.6f}", e_eff_[law]), seed},
+          c_.duration);
+    }
     add(RunKind::Hydro, law, hydroLabel(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
         0);
   }

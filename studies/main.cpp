@@ -36,6 +36,11 @@ int main(int argc, char** argv) {
   granwave::addStudyCommand(app, study);
   CLI11_PARSE(app, argc, argv);
 
+  // Under mpirun an error on one rank ends them all (the others may wait for it).
+  auto stop = [&mpi](int code) {
+    if (mpi.size() > 1) mpi.abort(code);
+    return code;
+  };
   std::string command_line;
   for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
   try {
@@ -45,10 +50,10 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
   } catch (const granwave::StudyInterrupted& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return 130;
+    return stop(130);
   } catch (const granwave::StudyError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return 2;
+    return stop(2);
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return 2;
@@ -60,7 +65,7 @@ int main(int argc, char** argv) {
     return 3;
   } catch (const std::exception& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return 1;
+    return stop(1);
   }
   return 0;
 }
