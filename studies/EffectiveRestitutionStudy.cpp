@@ -126,7 +126,8 @@ EffectiveRestitutionStudy::EffectiveRestitutionStudy(StudyFile& f) : file_(&f) {
       std::vector<std::string> o = c_.set;
       o.push_back(fmt::format("run.seed={}", seed));
       o.push_back(fmt::format("run.duration={}", g(c_.duration)));
-      RunRequest q{RunKind::Particles, drivenLabel(law, seed), studyScene(f, c_.path[law], o)};
+      RunRequest q =
+          runRequest(RunKind::Particles, drivenLabel(law, seed), studyScene(f, c_.path[law], o));
       q.window_cycles = c_.window;
       q.blocks = c_.blocks;
       requests_.push_back(std::move(q));
@@ -150,8 +151,8 @@ EffectiveRestitutionStudy::EffectiveRestitutionStudy(StudyFile& f) : file_(&f) {
               fmt::format("run.seed={}", c_.seeds.front())})
           o.push_back(s);
         if (!rough) o.push_back("contact.friction=0");
-        RunRequest q{RunKind::Particles, coolingLabel(law, nu, rough),
-                     studyScene(f, c_.path[law], o)};
+        RunRequest q = runRequest(RunKind::Particles, coolingLabel(law, nu, rough),
+                                  studyScene(f, c_.path[law], o));
         q.fields = false;
         requests_.push_back(std::move(q));
       }
@@ -161,7 +162,7 @@ EffectiveRestitutionStudy::EffectiveRestitutionStudy(StudyFile& f) : file_(&f) {
     std::vector<std::string> o = c_.set;
     o.push_back("hydro.restitution_model=\"constant\"");
     o.push_back(fmt::format("contact.e={}", g(e)));
-    requests_.push_back({RunKind::Hydro, hydroLabel(e), studyScene(f, c_.path[0], o)});
+    requests_.push_back(runRequest(RunKind::Hydro, hydroLabel(e), studyScene(f, c_.path[0], o)));
   }
 }
 

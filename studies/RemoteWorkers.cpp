@@ -94,7 +94,8 @@ void workerLoop(const MpiSession&, const std::vector<RunRecord>& records,
     try {
       const RunRecord& r = records.at(static_cast<std::size_t>(i));
       std::filesystem::remove(r.logPath());
-      ChildProcess child(exe, arguments(r), r.logPath());
+      ChildProcess child(r.request.kind == RunKind::Lammps ? r.request.program : exe, arguments(r),
+                         r.logPath());
       while (!child.poll(out)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     } catch (const std::exception&) {
       // Always answer: rank 0 waits for every run it handed out.

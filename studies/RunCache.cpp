@@ -32,16 +32,21 @@ RunCache::RunCache(std::string directory, std::string build_id)
 }
 
 RunRecord RunCache::record(const RunRequest& request) const {
-  std::string key = request.kind == RunKind::Particles ? "particles\n" : "hydro\n";
-  key += sceneToToml(request.scene);
+  const char* kind = request.kind == RunKind::Particles ? "particles"
+                     : request.kind == RunKind::Hydro   ? "hydro"
+                                                        : "lammps";
+  std::string key = std::string(kind) + "\n" + sceneToToml(request.scene);
+  if (request.kind == RunKind::Lammps) {
+    key += request.program + "\n" + request.deck_text;
+    for (const std::string& v : request.variables) key += v + "\n";
+  }
   if (request.kind == RunKind::Particles && request.fields)
     key += fmt::format("window={} blocks={}\n", request.window_cycles, request.blocks);
   key += build_id_;
   RunRecord r;
   r.request = request;
   // Named by content alone, so two labels for the same scene share one run.
-  r.stem = fmt::format("{}/{}-{:016x}", directory_,
-                       request.kind == RunKind::Particles ? "particles" : "hydro", fnv1a(key));
+  r.stem = fmt::format("{}/{}-{:016x}", directory_, kind, fnv1a(key));
   return r;
 }
 
@@ -60,6 +65,11 @@ bool RunCache::load(RunRecord& r) const {
   }
   // A record whose outputs were removed since does not count: the run is made again.
   const bool hydro = r.request.kind == RunKind::Hydro;
+  if (r.ok && r.request.kind == RunKind::Lammps) {
+    if (!std::filesystem::exists(r.lammpsPath())) return false;
+    r.reused = true;
+    return true;
+  }
   if (r.ok && !std::filesystem::exists(hydro ? r.hydroPath() : r.runPath())) return false;
   if (r.ok && !hydro && r.request.fields && !std::filesystem::exists(r.fieldsPath())) return false;
   r.reused = true;

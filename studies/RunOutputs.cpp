@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "h5/File.hpp"
 #include "particles/H5mdLayout.hpp"
@@ -67,6 +70,25 @@ ParticleFields readParticleFields(const std::string& path) {
     fr.relative = rel[e];
     fr.from_impact = impact[e] > 0.5;
     r.fronts.push_back(fr);
+  }
+  return r;
+}
+
+LammpsTrajectory readLammpsTrajectory(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot open the LAMMPS output");
+  LammpsTrajectory r;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    double step = 0, t = 0, zb = 0, com = 0;
+    if (!(row >> step >> t >> zb >> com))
+      throw std::runtime_error(path + ": malformed line '" + line + "' (expected step t z_b com)");
+    r.last_step = step;
+    r.time.push_back(t);
+    r.plate.push_back(zb);
+    r.com.push_back(com);
   }
   return r;
 }

@@ -67,7 +67,15 @@ struct Frame {
   double plate = 0;
 };
 
+// The LAMMPS deck's output (studies/lammps/paper-scene.lmp): per sample the paper's time t,
+// the plate height and the centre-of-mass height (m, lab frame).
+struct LammpsTrajectory {
+  std::vector<double> time, plate, com;
+  double last_step = 0;
+};
+
 ParticleFields readParticleFields(const std::string& fields_path);
+LammpsTrajectory readLammpsTrajectory(const std::string& path);
 LayerPatterns readLayerPatterns(const std::string& fields_path);
 Frame readLastFrame(const std::string& run_path);
 HydroFields readHydroFields(const std::string& hydro_path);

@@ -2,12 +2,15 @@
 // What a study asks to be run (one scene through the particle engine or the hydro solver),
 // and what came of it. Studies plan requests; the RunScheduler runs or reuses them.
 #include <string>
+#include <vector>
 
 #include "scene/Scene.hpp"
 
 namespace granwave {
 
-enum class RunKind { Particles, Hydro };
+// Lammps: the soft-sphere DEM alternative (studies/lammps/paper-scene.lmp), run by the
+// program and arguments below; its output is <stem>.com.txt.
+enum class RunKind { Particles, Hydro, Lammps };
 
 struct RunRequest {
   RunKind kind = RunKind::Particles;
@@ -18,7 +21,19 @@ struct RunRequest {
   bool fields = true;
   int window_cycles = 2;
   int blocks = 5;
+  // Lammps: the executable, the deck's text (part of the cache key) and its -var arguments
+  // (the scheduler adds -in, -log and the output file).
+  std::string program, deck_path, deck_text;
+  std::vector<std::string> variables;  // name, value, name, value, ...
 };
+
+inline RunRequest runRequest(RunKind kind, std::string label, Scene scene) {
+  RunRequest q;
+  q.kind = kind;
+  q.label = std::move(label);
+  q.scene = std::move(scene);
+  return q;
+}
 
 struct RunRecord {
   RunRequest request;
@@ -33,6 +48,7 @@ struct RunRecord {
   std::string runPath() const { return stem + ".h5"; }
   std::string fieldsPath() const { return stem + ".fields.h5"; }
   std::string hydroPath() const { return stem + ".hydro.h5"; }
+  std::string lammpsPath() const { return stem + ".com.txt"; }
   std::string logPath() const { return stem + ".log"; }
   std::string recordPath() const { return stem + ".done"; }
 };

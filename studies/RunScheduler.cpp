@@ -21,6 +21,13 @@ namespace granwave {
 std::vector<std::string> childArguments(const RunRecord& r) {
   const RunRequest& q = r.request;
   if (q.kind == RunKind::Hydro) return {"hydro", r.scenePath(), "-o", r.hydroPath(), "-q"};
+  if (q.kind == RunKind::Lammps) {
+    std::vector<std::string> a{"-in", q.deck_path, "-log", "none", "-screen", "none"};
+    for (std::size_t i = 0; i + 1 < q.variables.size(); i += 2)
+      a.insert(a.end(), {"-var", q.variables[i], q.variables[i + 1]});
+    a.insert(a.end(), {"-var", "out", r.lammpsPath()});
+    return a;
+  }
   if (!q.fields) return {"simulate", r.scenePath(), "-o", r.runPath(), "-q"};
   return {"simulate",
           r.scenePath(),
@@ -144,8 +151,9 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
       writeScene(r);
       std::filesystem::remove(r.logPath());
       std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
+      const std::string& program = r.request.kind == RunKind::Lammps ? r.request.program : exe;
       running.push_back({static_cast<std::size_t>(&r - records.data()),
-                         ChildProcess(exe, childArguments(r), r.logPath())});
+                         ChildProcess(program, childArguments(r), r.logPath())});
     }
     bool reaped = false;
     for (auto it = running.begin(); it != running.end();) {

@@ -101,7 +101,8 @@ SoundSpeedStudy::SoundSpeedStudy(StudyFile& f) {
         o.push_back(fmt::format("drive.gamma={}", g(gamma)));
         o.push_back(fmt::format("run.seed={}", c_.seed));
         o.push_back(fmt::format("run.duration={}", g(c_.duration)));
-        RunRequest q{RunKind::Particles, label(law, n, gamma), studyScene(f, c_.path[law], o)};
+        RunRequest q =
+            runRequest(RunKind::Particles, label(law, n, gamma), studyScene(f, c_.path[law], o));
         q.window_cycles = c_.window;
         q.blocks = c_.blocks;
         requests_.push_back(std::move(q));

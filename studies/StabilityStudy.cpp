@@ -84,13 +84,14 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
         o.push_back(fmt::format("drive.gamma={}", g(gamma)));
         o.push_back(fmt::format("run.seed={}", c_.seed));
         o.push_back(fmt::format("run.duration={:.6g}", c_.cycles / fr));
-        RunRequest q{RunKind::Particles, edLabel(law, fr, gamma), studyScene(f, c_.path[law], o)};
+        RunRequest q =
+            runRequest(RunKind::Particles, edLabel(law, fr, gamma), studyScene(f, c_.path[law], o));
         q.window_cycles = c_.window;
         q.blocks = c_.blocks;
         requests_.push_back(std::move(q));
         if (c_.hydro)
-          requests_.push_back(
-              {RunKind::Hydro, hydroLabel(law, fr, gamma), studyScene(f, c_.path[law], o)});
+          requests_.push_back(runRequest(RunKind::Hydro, hydroLabel(law, fr, gamma),
+                                         studyScene(f, c_.path[law], o)));
       }
 }
 

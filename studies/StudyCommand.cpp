@@ -36,10 +36,16 @@ void writeRunCosts(const RunSet& runs, h5::File& f, Report& report) {
   std::vector<double> wall, cpu, work;
   for (const RunRecord& r : runs.all()) {
     const bool hydro = r.request.kind == RunKind::Hydro;
+    const bool lammps = r.request.kind == RunKind::Lammps;
+    const std::string method = hydro ? "hydro" : lammps ? "LAMMPS (DEM)" : "particles";
     std::string w = "-";
     double work_value = 0;
     if (r.ok) {
-      if (hydro) {
+      if (lammps) {
+        const LammpsTrajectory l = readLammpsTrajectory(r.lammpsPath());
+        work_value = static_cast<double>(l.last_step);
+        w = fmt::format("{:.3g} time steps", work_value);
+      } else if (hydro) {
         const HydroFields h = readHydroFields(r.hydroPath());
         work_value = static_cast<double>(h.steps);
         w = fmt::format("{} steps / {} RHS", h.steps, h.rhs_evals);
@@ -49,11 +55,11 @@ void writeRunCosts(const RunSet& runs, h5::File& f, Report& report) {
         w = fmt::format("{:.3g} events", static_cast<double>(o.events));
       }
     }
-    t.rows.push_back({r.request.label, hydro ? "hydro" : "particles",
+    t.rows.push_back({r.request.label, method,
                       r.ok ? (r.reused ? "ok (reused)" : "ok") : "failed: " + r.message,
                       fmt::format("{:.2f}", r.wall), fmt::format("{:.2f}", r.cpu), w});
     labels.push_back(r.request.label);
-    kinds.push_back(hydro ? "hydro" : "particles");
+    kinds.push_back(method);
     status.push_back(r.ok ? "ok" : r.message);
     wall.push_back(r.wall);
     cpu.push_back(r.cpu);

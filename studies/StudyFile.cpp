@@ -135,7 +135,7 @@ std::string StudyFile::scenePath(std::string_view section, std::string_view key,
   std::filesystem::path path(p);
   if (path.is_relative()) path = std::filesystem::path(path_).parent_path() / path;
   if (!std::filesystem::is_regular_file(path))
-    fail(section, key, fmt::format("scene file {} does not exist", path.string()));
+    fail(section, key, fmt::format("file {} does not exist", path.string()));
   return path.lexically_normal().string();
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <regex>
 
+#include "coarse_grain/PeriodDetector.hpp"
 #include "scene/SceneDerived.hpp"
 #include "studies/FieldFigures.hpp"
 #include "studies/Measurement.hpp"
@@ -88,6 +89,7 @@ void WaveFrontsStudy::analyse(const RunSet& runs, h5::File& f, Report& report) c
   costSection(runs, f, report);
   failureSection(runs, f, report);
   modelSection(runs, f, report);
+  if (c_.lammps) lammpsSection(runs, f, report);
   report.summary = summary_;
 }
 
@@ -672,6 +674,103 @@ void WaveFrontsStudy::modelSection(const RunSet& runs, h5::File& f, Report& repo
       format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
       formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
       format(dry.strong), verdicts);
+}
+
+void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& report) const {
+  ReportSection& s = report.section(
+      "The alternative a user would run: soft-sphere DEM (LAMMPS)",
+      "The paper's scene with LAMMPS' granular package (studies/lammps/paper-scene.lmp: Hertz "
+      "contacts of softened glass, E = 63 MPa, Tsuji damping for a binary restitution of 0.9, "
+      "Mindlin friction 0.5, the same container and drive), beside the event-driven dry layer "
+      "(seed 1; its restitution is close to 0.9 at the layer's impact speeds) and the hydro "
+      "solver. Speeds are wall seconds per simulated second, measured in this study's run. The "
+      "deck writes the centre of mass only, so no front speed is compared.");
+  const std::string label = fmt::format("LAMMPS dry seed {}", c_.lammps_seed);
+  const RunRecord& r = runs.get(label);
+  Table t;
+  t.title = "Soft-sphere DEM against event-driven and continuum, dry layer";
+  t.columns = {"method",       "wall s per simulated s", "CM period (T)",
+               "f/2 strength", "CM mean height / d",     "front speed (m/s)"};
+  const double d = base_[0].particles.diameter;
+  const RunRecord& ed_run = runs.get(edLabel(0, fmt::format("seed {}", c_.seeds.front())));
+  const double ed_rate = ed_run.ok ? ed_run.wall / c_.duration : NAN;
+  auto ed = particles(runs, edLabel(0, fmt::format("seed {}", c_.seeds.front())));
+  if (ed) {
+    double mean = 0;
+    for (double z : ed->com) mean += z / d / ed->phases;
+    t.rows.push_back({"event-driven (granwave)", formatNumber(ed_rate, 4),
+                      std::to_string(ed->layer_period), "–", formatNumber(mean, 2),
+                      format(impactFronts(ed->fronts).all)});
+  }
+  auto h = hydro(runs, hydroLabel(0, "velocity"));
+  const RunRecord& hr = runs.get(hydroLabel(0, "velocity"));
+  if (h) {
+    double mean = 0;
+    for (double z : h->com) mean += z / d / h->phases;
+    t.rows.push_back({"hydro (granwave, velocity-dependent closure)",
+                      formatNumber(hr.wall / (h->cycles / base_[0].drive.frequency), 3),
+                      std::to_string(h->period), "–", formatNumber(mean, 2),
+                      format(impactFronts(h->fronts).all)});
+  }
+  if (!r.ok) {
+    t.rows.push_back({"LAMMPS", "failed: " + r.message, "–", "–", "–", "–"});
+    s.add(std::move(t));
+    return;
+  }
+  const LammpsTrajectory l = readLammpsTrajectory(r.lammpsPath());
+  const int M = 100;  // the deck's samples per cycle (its default, used by the study)
+  PeriodOptions po;
+  po.samples_per_cycle = M;
+  const int cycles = static_cast<int>(l.com.size()) / M;
+  const PeriodResult period = detectPeriod(l.com, std::max(3, cycles / 5), po);
+  const double lammps_rate = r.wall / c_.lammps_duration;
+  double mean = 0;
+  for (double z : l.com) mean += z / d / static_cast<double>(l.com.size());
+  t.rows.push_back({"LAMMPS (soft-sphere DEM, one core)", formatNumber(lammps_rate, 3),
+                    std::to_string(period.period),
+                    period.strength.size() > 2 ? formatNumber(period.strength[2], 3) : "–",
+                    formatNumber(mean, 2), "not available (centre of mass only)"});
+  const double ratio = lammps_rate / ed_rate;
+  putValue(f, kRoot + "/lammps", "wall_per_simulated_second", lammps_rate);
+  putValue(f, kRoot + "/lammps", "event_driven_wall_per_simulated_second", ed_rate);
+  putValue(f, kRoot + "/lammps", "speed_ratio", ratio);
+  putValue(f, kRoot + "/lammps", "period", period.period);
+  s.add(std::move(t));
+
+  // Centre of mass folded onto two cycles over the steady part, beside the particles'.
+  Figure fig;
+  fig.title = "Centre of mass over two cycles: DEM, event-driven, hydro (dry)";
+  fig.caption = "LAMMPS: averaged over its last 80 % of cycles, folded onto two cycles.";
+  fig.xlabel = "t / T";
+  fig.ylabel = "z_CM / d (lab frame)";
+  std::vector<double> x(2 * M), y(2 * M, 0.0);
+  std::vector<int> n(2 * M, 0);
+  const int first = std::max(3, cycles / 5) * M;
+  for (std::size_t i = static_cast<std::size_t>(first); i < l.com.size(); ++i) {
+    const double phase = l.time[i] * base_[0].drive.frequency;
+    const int k = static_cast<int>(std::lround(phase * M)) % (2 * M);
+    y[k] += l.com[i] / d;
+    ++n[k];
+  }
+  for (int k = 0; k < 2 * M; ++k) {
+    x[k] = static_cast<double>(k) / M;
+    y[k] = n[k] ? y[k] / n[k] : NAN;
+  }
+  fig.series.push_back(lineSeries(x, y, "LAMMPS (DEM)", "tab:green"));
+  if (ed) fig.series.push_back(centerOfMassSeries(*ed, d, "event-driven", "tab:orange"));
+  if (h) {
+    Series hs = centerOfMassSeries(*h, d, "hydro", "tab:orange");
+    hs.linestyle = "--";
+    fig.series.push_back(hs);
+  }
+  s.add(std::move(fig));
+  s.addText(fmt::format(
+      "Measured in this run: LAMMPS takes {} wall seconds per simulated second against {} for "
+      "the event-driven engine on the same scene, a factor {}. Its centre of mass moves with "
+      "period {} (f/2 strength {}), the event-driven dry layer with period {}.",
+      formatNumber(lammps_rate, 2), formatNumber(ed_rate, 3), formatNumber(ratio, 0), period.period,
+      period.strength.size() > 2 ? formatNumber(period.strength[2], 3) : "–",
+      ed ? std::to_string(ed->layer_period) : "–"));
 }
 
 }  // namespace granwave

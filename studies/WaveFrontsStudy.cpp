@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 
 #include "scene/SceneDerived.hpp"
 #include "studies/StudyScenes.hpp"
@@ -36,6 +40,14 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
   c_.fail_duration = f.number("failure", "duration", c_.fail_duration);
   c_.fail_cells = f.integers("failure", "hydro_cells", c_.fail_cells);
   c_.fail_rtol = f.numbers("failure", "hydro_rtol", c_.fail_rtol);
+  c_.lammps_mode = f.string("lammps", "run", c_.lammps_mode);
+  if (c_.lammps_mode != "auto" && c_.lammps_mode != "yes" && c_.lammps_mode != "no")
+    f.fail("lammps", "run", "expected \"auto\", \"yes\" or \"no\"");
+  c_.lammps_install = f.boolean("lammps", "install", c_.lammps_install);
+  c_.lammps_executable = f.string("lammps", "executable", c_.lammps_executable);
+  c_.lammps_duration = f.number("lammps", "duration", c_.lammps_duration);
+  c_.lammps_seed = f.integer("lammps", "seed", c_.lammps_seed);
+  c_.lammps_deck = f.scenePath("lammps", "deck", "lammps/paper-scene.lmp");
   if (c_.window < 1 || c_.window > 4) f.fail("particles", "window_cycles", "expected 1 to 4");
   if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2");
   if (!(c_.duration > 0)) f.fail("particles", "duration", "expected a positive time in s");
@@ -89,6 +101,7 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
     add(RunKind::Hydro, law, hydroLabel(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
         0);
   }
+  if (c_.lammps_mode != "no") addLammps(f);
   for (double st : c_.stokes) {
     add(RunKind::Particles, 1, edLabel(1, fmt::format("St_c={}", g(st))),
         {fmt::format("contact.stokes_critical={}", g(st)),
@@ -112,6 +125,47 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
     for (double rtol : c_.cost_rtol)
       add(RunKind::Hydro, 1, hydroLabel(1, fmt::format("{} cells rtol {}", cells, g(rtol))),
           {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", g(rtol))}, 0);
+}
+
+// The LAMMPS run of the paper's dry scene (studies/lammps/paper-scene.lmp; its contact model
+// has a constant e_n = 0.9, so it stands beside the dry particles). Installs Debian's lammps if
+// asked and missing; otherwise a missing executable is a study-file error.
+void WaveFrontsStudy::addLammps(StudyFile& f) {
+  auto find = [&]() -> std::string {
+    const std::string& exe = c_.lammps_executable;
+    if (exe.find('/') != std::string::npos) return std::filesystem::exists(exe) ? exe : "";
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "");
+    for (std::string dir; std::getline(dirs, dir, ':');)
+      if (std::filesystem::exists(std::filesystem::path(dir) / exe))
+        return (std::filesystem::path(dir) / exe).string();
+    return "";
+  };
+  std::string program = find();
+  if (program.empty() && c_.lammps_install) {
+    fmt::print(stderr, "granwave study: installing Debian's lammps ([lammps] install = true)\n");
+    const int rc = std::system(
+        "DEBIAN_FRONTEND=noninteractive $( [ \"$(id -u)\" -eq 0 ] || echo sudo ) apt-get "
+        "install -y -qq --no-install-recommends lammps >&2");
+    if (rc != 0) f.fail("lammps", "install", "apt-get install lammps failed");
+    program = find();
+  }
+  if (program.empty() && c_.lammps_mode == "auto") return;  // not installed: left out
+  if (program.empty())
+    f.fail("lammps", "executable",
+           "not found on PATH: install Debian's lammps (apt-get install lammps) or set "
+           "[lammps] install = true");
+  std::ifstream deck(c_.lammps_deck);
+  std::ostringstream text;
+  text << deck.rdbuf();
+  RunRequest q =
+      runRequest(RunKind::Lammps, fmt::format("LAMMPS dry seed {}", c_.lammps_seed), base_[0]);
+  q.program = program;
+  q.deck_path = c_.lammps_deck;
+  q.deck_text = text.str();
+  q.variables = {"duration", g(c_.lammps_duration), "seed", std::to_string(c_.lammps_seed)};
+  requests_.push_back(std::move(q));
+  c_.lammps = true;
 }
 
 void WaveFrontsStudy::add(RunKind kind, int law, const std::string& label,
