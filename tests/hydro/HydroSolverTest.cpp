@@ -111,9 +111,7 @@ TEST(HydroSolver, ElasticGasUnderGravitySettlesToHydrostaticBalance) {
     const double th = U[3 * i + 2] / rho;
     theta_min = std::min(theta_min, th);
     theta_max = std::max(theta_max, th);
-    auto p = [&](int k) {
-      return pde.model().pressure(U[3 * k], U[3 * k + 2] / U[3 * k]);
-    };
+    auto p = [&](int k) { return pde.model().pressure(U[3 * k], U[3 * k + 2] / U[3 * k]); };
     const double residual = (p(i + 1) - p(i - 1)) / (2 * h) + rho * g.gravity;
     worst = std::max(worst, std::abs(residual) / (rho * g.gravity));
     EXPECT_LT(std::abs(U[3 * i + 1] / rho), 1e-4);  // at rest
