@@ -391,8 +391,10 @@ void WaveFrontsStudy::costSection(const RunSet& runs, h5::File& f, Report& repor
   ReportSection& s = report.section(
       "Cost against accuracy",
       "Error of the wet layer's mean impact-front speed against the CPU time of the run, on the "
-      "same axes. Particles: the statistical error (fit and block spread), which falls as more "
-      "cycles are averaged. Hydro: the discretisation error, |v - v_ref| against the finest "
+      "same axes. Particles: the statistical error (fit and block spread) against the number of "
+      "cycles averaged; it need not fall, since the wet layer switches between periods 1 and 2 "
+      "and the front speed depends on that. Hydro: the discretisation error, |v - v_ref| against "
+      "the finest "
       "grid and tightest tolerance run (v_ref), which is not plotted. The dashed line is the "
       "model gap: the hydro reference minus the particles' combined value, an error no grid "
       "or tolerance removes.");
