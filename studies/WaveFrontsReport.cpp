@@ -685,17 +685,18 @@ void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& rep
       "contacts of softened glass, E = 63 MPa, Tsuji damping for a binary restitution of 0.9, "
       "Mindlin friction 0.5, the same container and drive), beside the event-driven dry layer "
       "(seed 1; its restitution is close to 0.9 at the layer's impact speeds) and the hydro "
-      "solver. Speeds are wall seconds per simulated second, measured in this study's run. The "
+      "solver. Speeds are CPU seconds (one core each) per simulated second, measured in this "
+      "study's run (CPU, not wall, time: the study runs several runs at once). The "
       "deck writes the centre of mass only, so no front speed is compared.");
   const std::string label = fmt::format("LAMMPS dry seed {}", c_.lammps_seed);
   const RunRecord& r = runs.get(label);
   Table t;
   t.title = "Soft-sphere DEM against event-driven and continuum, dry layer";
-  t.columns = {"method",       "wall s per simulated s", "CM period (T)",
-               "f/2 strength", "CM mean height / d",     "front speed (m/s)"};
+  t.columns = {"method",       "CPU s per simulated s", "CM period (T)",
+               "f/2 strength", "CM mean height / d",    "front speed (m/s)"};
   const double d = base_[0].particles.diameter;
   const RunRecord& ed_run = runs.get(edLabel(0, fmt::format("seed {}", c_.seeds.front())));
-  const double ed_rate = ed_run.ok ? ed_run.wall / c_.duration : NAN;
+  const double ed_rate = ed_run.ok ? ed_run.cpu / c_.duration : NAN;
   auto ed = particles(runs, edLabel(0, fmt::format("seed {}", c_.seeds.front())));
   if (ed) {
     double mean = 0;
@@ -710,7 +711,7 @@ void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& rep
     double mean = 0;
     for (double z : h->com) mean += z / d / h->phases;
     t.rows.push_back({"hydro (granwave, velocity-dependent closure)",
-                      formatNumber(hr.wall / (h->cycles / base_[0].drive.frequency), 3),
+                      formatNumber(hr.cpu / (h->cycles / base_[0].drive.frequency), 3),
                       std::to_string(h->period), "–", formatNumber(mean, 2),
                       format(impactFronts(h->fronts).all)});
   }
@@ -725,7 +726,7 @@ void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& rep
   po.samples_per_cycle = M;
   const int cycles = static_cast<int>(l.com.size()) / M;
   const PeriodResult period = detectPeriod(l.com, std::max(3, cycles / 5), po);
-  const double lammps_rate = r.wall / c_.lammps_duration;
+  const double lammps_rate = r.cpu / c_.lammps_duration;
   double mean = 0;
   for (double z : l.com) mean += z / d / static_cast<double>(l.com.size());
   t.rows.push_back({"LAMMPS (soft-sphere DEM, one core)", formatNumber(lammps_rate, 3),
@@ -733,8 +734,8 @@ void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& rep
                     period.strength.size() > 2 ? formatNumber(period.strength[2], 3) : "–",
                     formatNumber(mean, 2), "not available (centre of mass only)"});
   const double ratio = lammps_rate / ed_rate;
-  putValue(f, kRoot + "/lammps", "wall_per_simulated_second", lammps_rate);
-  putValue(f, kRoot + "/lammps", "event_driven_wall_per_simulated_second", ed_rate);
+  putValue(f, kRoot + "/lammps", "cpu_per_simulated_second", lammps_rate);
+  putValue(f, kRoot + "/lammps", "event_driven_cpu_per_simulated_second", ed_rate);
   putValue(f, kRoot + "/lammps", "speed_ratio", ratio);
   putValue(f, kRoot + "/lammps", "period", period.period);
   s.add(std::move(t));
@@ -767,7 +768,7 @@ void WaveFrontsStudy::lammpsSection(const RunSet& runs, h5::File& f, Report& rep
   }
   s.add(std::move(fig));
   s.addText(fmt::format(
-      "Measured in this run: LAMMPS takes {} wall seconds per simulated second against {} for "
+      "Measured in this run: LAMMPS takes {} CPU seconds per simulated second against {} for "
       "the event-driven engine on the same scene, a factor {}. Its centre of mass moves with "
       "period {} (f/2 strength {}), the event-driven dry layer with period {}.",
       formatNumber(lammps_rate, 2), formatNumber(ed_rate, 3), formatNumber(ratio, 0), period.period,
