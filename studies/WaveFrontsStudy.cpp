@@ -47,7 +47,13 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) : file_(&f) {
   c_.lammps_executable = f.string("lammps", "executable", c_.lammps_executable);
   c_.lammps_duration = f.number("lammps", "duration", c_.lammps_duration);
   c_.lammps_seed = f.integer("lammps", "seed", c_.lammps_seed);
-  c_.lammps_deck = f.scenePath("lammps", "deck", "lammps/paper-scene.lmp");
+  // The deck: given relative to the study file, else the one shipped in the source tree.
+  c_.lammps_deck = f.string("lammps", "deck", "");
+  if (c_.lammps_mode != "no")
+    c_.lammps_deck = c_.lammps_deck.empty() ? std::string(GRANWAVE_LAMMPS_DECK)
+                                            : f.scenePath("lammps", "deck", "");
+  if (c_.lammps_mode != "no" && !std::filesystem::exists(c_.lammps_deck))
+    f.fail("lammps", "deck", "the LAMMPS deck " + c_.lammps_deck + " does not exist");
   if (c_.window < 1 || c_.window > 4) f.fail("particles", "window_cycles", "expected 1 to 4");
   if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2");
   if (!(c_.duration > 0)) f.fail("particles", "duration", "expected a positive time in s");
