@@ -3,10 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
-#include <regex>
 
 #include "coarse_grain/PeriodDetector.hpp"
 #include "scene/SceneDerived.hpp"
@@ -52,12 +52,31 @@ double meanPhase(const std::vector<double>& v) {
   return m <= 0.5 ? m + 1 : m;
 }
 
+// The collapse time in an engine's collapse message ("... collapse at t = 0.48 s: ..."), or
+// NaN. Plain string search: std::regex draws warnings from libstdc++ in sanitizer builds.
+double collapseTime(const std::string& message) {
+  const std::string key = "collapse at t = ";
+  const auto at = message.find(key);
+  if (at == std::string::npos) return NAN;
+  try {
+    return std::stod(message.substr(at + key.size()));
+  } catch (const std::exception&) {
+    return NAN;
+  }
+}
+
 // The solver's reason in a few words: the CVODE flag name if the message carries one.
 std::string shortReason(const std::string& message) {
-  std::smatch m;
-  if (std::regex_search(message, m, std::regex("CV_[A-Z_]+"))) return m.str();
-  if (std::regex_search(message, m, std::regex("collapse at t = ([0-9.eE+-]+)")))
-    return fmt::format("collapse at t = {:.3f} s", std::stod(m[1].str()));
+  const auto cv = message.find("CV_");
+  if (cv != std::string::npos) {
+    std::size_t end = cv + 3;
+    while (end < message.size() &&
+           (std::isupper(static_cast<unsigned char>(message[end])) || message[end] == '_'))
+      ++end;
+    return message.substr(cv, end - cv);
+  }
+  const double t = collapseTime(message);
+  if (std::isfinite(t)) return fmt::format("collapse at t = {:.3f} s", t);
   return message.substr(0, 60);
 }
 
@@ -496,11 +515,7 @@ void WaveFrontsStudy::failureSection(const RunSet& runs, h5::File& f, Report& re
         collapse_time[law].push_back(NAN);
       } else {
         row.push_back(shortReason(r.message));
-        std::smatch m;
-        collapse_time[law].push_back(
-            std::regex_search(r.message, m, std::regex("collapse at t = ([0-9.eE+-]+)"))
-                ? std::stod(m[1].str())
-                : NAN);
+        collapse_time[law].push_back(collapseTime(r.message));
       }
     }
     tp.rows.push_back(row);
