@@ -47,6 +47,13 @@ Measurement combine(const std::vector<Measurement>& values) {
   return {mean, error};
 }
 
+Measurement meanAndStandardError(const std::vector<double>& values) {
+  std::vector<Measurement> m;
+  for (double x : values)
+    if (std::isfinite(x)) m.push_back({x, std::numeric_limits<double>::quiet_NaN()});
+  return combine(m);
+}
+
 double sigmaDistance(const Measurement& a, const Measurement& b) {
   const double ea = std::isfinite(a.error) ? a.error : 0.0;
   const double eb = std::isfinite(b.error) ? b.error : 0.0;

@@ -20,6 +20,9 @@ struct Measurement {
 // without an error count with the mean of the others' errors; none valid: invalid result.
 Measurement combine(const std::vector<Measurement>& values);
 
+// Mean and standard error of the mean of the finite values (error NaN for fewer than 2).
+Measurement meanAndStandardError(const std::vector<double>& values);
+
 // (a - b) / sqrt(sa^2 + sb^2): how many combined sigmas two measurements differ by.
 double sigmaDistance(const Measurement& a, const Measurement& b);
 

@@ -9,6 +9,7 @@
 
 #include "coarse_grain/MomentumDeficiency.hpp"
 #include "scene/SceneDerived.hpp"
+#include "studies/FailureReason.hpp"
 #include "studies/ImpactFronts.hpp"
 #include "studies/Measurement.hpp"
 #include "studies/MomentumTransferStudy.hpp"
@@ -35,14 +36,6 @@ int wrap(int k, int n) { return ((k % n) + n) % n; }
 double circularDistance(double a, double b, double period) {
   const double d = std::fmod(std::abs(a - b), period);
   return std::min(d, period - d);
-}
-
-// Mean and standard error of the mean of the finite entries (error NaN for fewer than 2).
-Measurement meanError(const std::vector<double>& v) {
-  std::vector<Measurement> m;
-  for (double x : v)
-    if (std::isfinite(x)) m.push_back({x, NAN});
-  return combine(m);
 }
 
 double stdDev(const std::vector<double>& v) {
@@ -126,17 +119,6 @@ struct Analysis {
   }
 };
 
-// The reason a run failed, in a few words.
-std::string shortReason(const std::string& message) {
-  const std::string key = "collapse at t = ";
-  const std::size_t at = message.find(key);
-  if (at != std::string::npos)
-    return fmt::format("inelastic collapse at t = {:.3f} s",
-                       std::atof(message.c_str() + at + key.size()));
-  if (message.empty()) return "no message";
-  return message.size() > 80 ? message.substr(0, 77) + "..." : message;
-}
-
 void readPair(const MomentumTransferConfig& c, const RunSet& runs, Pair& p) {
   for (int law = 0; law < 2; ++law) {
     const RunRecord& r = runs.get(MomentumTransferStudy::label(law, p.seed));
@@ -218,9 +200,9 @@ void readPair(const MomentumTransferConfig& c, const RunSet& runs, Pair& p) {
     }
     const double n = static_cast<double>(used.size()), B = p.blocks;
     for (double& b : blocks) b /= n;
-    const double mean = meanError(pooled).value;
+    const double mean = meanAndStandardError(pooled).value;
     p.rms[law] = {mean, stdDev(blocks) / std::sqrt(B)};
-    p.block_ratio[law] = meanError(blocks).value / mean;
+    p.block_ratio[law] = meanAndStandardError(blocks).value / mean;
     p.signal2[law] = (B * p2 - b2) / (B - 1) / n;
     p.noise_share[law] = (b2 - p2) / (B - 1) / p2;
   }
@@ -258,9 +240,9 @@ Analysis analyseRuns(const MomentumTransferConfig& c, const RunSet& runs) {
   a.r_all_rows = combine(all_rows);
   a.r_aligned = combine(aligned);
   for (int law = 0; law < 2; ++law) a.rms[law] = combine(rms[law]);
-  a.above_one = meanError(above);
-  a.r_signal = meanError(r_signal);
-  for (int law = 0; law < 2; ++law) a.noise_share[law] = meanError(noise[law]);
+  a.above_one = meanAndStandardError(above);
+  a.r_signal = meanAndStandardError(r_signal);
+  for (int law = 0; law < 2; ++law) a.noise_share[law] = meanAndStandardError(noise[law]);
   a.z_paper = sigmaDistance(a.r, kPaper);
   a.z_binary = sigmaDistance(a.r, kBinary);
 
@@ -276,15 +258,15 @@ Analysis analyseRuns(const MomentumTransferConfig& c, const RunSet& runs) {
       pooled.push_back(p->pooled.row_mean[k]);
       for (const Deficiency& b : p->blocks_r) blocks.push_back(b.row_mean[k]);
     }
-    a.row_mean.push_back(meanError(pooled).value);
-    a.row_error.push_back(meanError(blocks).error);
+    a.row_mean.push_back(meanAndStandardError(pooled).value);
+    a.row_error.push_back(meanAndStandardError(blocks).error);
     for (int j = 0; j < a.nz; ++j) {
       std::vector<double> v;
       for (const Pair* p : ok) {
         const int k = wrap(p->on[1] + offset, p->layer[1]->phases);
         v.push_back(p->pooled.ratio[static_cast<std::size_t>(k) * a.nz + j]);
       }
-      const double m = meanError(v).value;
+      const double m = meanAndStandardError(v).value;
       a.map[static_cast<std::size_t>(j) * n_tau + i] = m;
       if (std::isfinite(m)) {
         if (a.j0 < 0 || j < a.j0) a.j0 = j;
@@ -315,8 +297,8 @@ LayerProfile layerProfile(const std::vector<const Pair*>& ok, const std::vector<
       pooled.push_back(value(p, rms, -1, k[s], j));
       for (int b = 0; b < ok[s]->blocks; ++b) blocks.push_back(value(p, rms, b, k[s], j));
     }
-    const double m = meanError(pooled).value * scale;
-    const double e = meanError(blocks).error * scale;
+    const double m = meanAndStandardError(pooled).value * scale;
+    const double e = meanAndStandardError(blocks).error * scale;
     out.mean.push_back(m);
     out.low.push_back(m - e);
     out.high.push_back(m + e);
@@ -480,7 +462,7 @@ Table layerTable(const Analysis& a, int blocks) {
   }
   t.rows.push_back(
       {"combined", "–", "–", format(scaled(a.rms[0], 1e3), 1), format(scaled(a.rms[1], 1e3), 1),
-       format(meanError(ratio[0])) + " / " + format(meanError(ratio[1])),
+       format(meanAndStandardError(ratio[0])) + " / " + format(meanAndStandardError(ratio[1])),
        format(a.noise_share[0]) + " / " + format(a.noise_share[1]), format(a.above_one)});
   return t;
 }

@@ -190,20 +190,7 @@ void SoundSpeedStudy::analyse(const RunSet& runs, h5::File& f, Report& report) c
             per_block.push_back(predictions(sb, mass, closure));
             ua_block.push_back(sb.ahead.valid ? sb.ahead.uz : NAN);
           }
-          auto spread = [](const std::vector<double>& v) -> double {
-            double m = 0, s2 = 0;
-            int k = 0;
-            for (double x : v)
-              if (std::isfinite(x)) {
-                m += x;
-                ++k;
-              }
-            if (k < 2) return NAN;
-            m /= k;
-            for (double x : v)
-              if (std::isfinite(x)) s2 += (x - m) * (x - m);
-            return std::sqrt(s2 / (k - 1) / k);
-          };
+          auto spread = [](const std::vector<double>& v) { return meanAndStandardError(v).error; };
           const double ua_err = spread(ua_block);
           const Measurement w{fr.speed - st.ahead.uz,
                               std::hypot(fr.error, std::isfinite(ua_err) ? ua_err : 0.0)};

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "scene/SceneDerived.hpp"
+#include "studies/FailureReason.hpp"
 #include "studies/RunOutputs.hpp"
 #include "studies/StudyResults.hpp"
 #include "studies/StudyScenes.hpp"
@@ -130,10 +131,7 @@ void StabilityStudy::analyse(const RunSet& runs, h5::File& f, Report& report) co
             hp = hf.periodic ? hf.period : 0;
             h = hf.periodic ? fmt::format("period {}", hf.period) : "no period";
           } else {
-            std::string reason = rh.message;
-            const auto at = reason.find("CV_");
-            h = "fails: " + (at != std::string::npos ? reason.substr(at, reason.find(' ', at) - at)
-                                                     : reason.substr(0, 40));
+            h = "fails: " + shortReason(rh.message);
           }
         }
         hydro_cell[law].push_back(h);
