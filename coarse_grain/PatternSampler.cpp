@@ -1,8 +1,12 @@
 #include "coarse_grain/PatternSampler.hpp"
 
+#include <cstdint>
 #include <numeric>
+#include <string>
 
 #include "coarse_grain/SurfaceProfile.hpp"
+#include "h5/H5Error.hpp"
+#include "particles/StateArchive.hpp"
 
 namespace granwave {
 
@@ -19,6 +23,37 @@ void PatternSampler::observe(const Snapshot& s) {
     while (static_cast<int>(cycles_.size()) > cfg_.keep_cycles + 1) cycles_.pop_front();
   }
   cycles_.back().push_back(s);
+}
+
+// All kept snapshots in one archive, with the number of snapshots of each cycle (the newest
+// may be partial).
+void PatternSampler::saveState(h5::File& file, const std::string& group) const {
+  std::vector<Snapshot> all;
+  std::vector<std::int64_t> sizes;
+  for (const auto& c : cycles_) {
+    all.insert(all.end(), c.begin(), c.end());
+    sizes.push_back(static_cast<std::int64_t>(c.size()));
+  }
+  writeSnapshots(file, group + "/snapshots", all);
+  file.writeDataset(group + "/cycle_sizes", sizes, {sizes.size()});
+  file.writeAttribute<std::int64_t>(group, "current_cycle", current_);
+}
+
+void PatternSampler::restoreState(const h5::File& file, const std::string& group) {
+  const std::vector<Snapshot> all = readSnapshots(file, group + "/snapshots");
+  const auto sizes = file.readDataset<std::int64_t>(group + "/cycle_sizes");
+  cycles_.clear();
+  std::size_t next = 0;
+  for (std::int64_t size : sizes) {
+    if (size < 0 || next + static_cast<std::size_t>(size) > all.size())
+      throw h5::H5Error(file.name() + ": " + group + "/cycle_sizes does not match its snapshots");
+    cycles_.emplace_back(all.begin() + static_cast<std::ptrdiff_t>(next),
+                         all.begin() + static_cast<std::ptrdiff_t>(next + size));
+    next += static_cast<std::size_t>(size);
+  }
+  if (next != all.size())
+    throw h5::H5Error(file.name() + ": " + group + "/cycle_sizes does not match its snapshots");
+  current_ = static_cast<long>(file.readAttribute<std::int64_t>(group, "current_cycle"));
 }
 
 std::vector<std::vector<Snapshot>> PatternSampler::cycles() const {

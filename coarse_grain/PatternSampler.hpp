@@ -10,6 +10,7 @@
 #include "coarse_grain/KinkDetector.hpp"
 #include "coarse_grain/StateClassifier.hpp"
 #include "coarse_grain/SurfaceWaveDetector.hpp"
+#include "particles/Checkpointable.hpp"
 #include "particles/Snapshot.hpp"
 
 namespace granwave {
@@ -20,10 +21,12 @@ struct PatternSamplerConfig {
   int keep_cycles = 16;         // last cycles kept (even: period-2 alternation pairs up)
 };
 
-class PatternSampler : public SnapshotObserver {
+class PatternSampler : public SnapshotObserver, public Checkpointable {
  public:
   explicit PatternSampler(const PatternSamplerConfig& c) : cfg_(c) {}
   void observe(const Snapshot& s) override;
+  void saveState(h5::File& file, const std::string& group) const override;
+  void restoreState(const h5::File& file, const std::string& group) override;
   // Cycles kept, oldest first; each holds samples_per_cycle snapshots (a partial last
   // cycle is dropped).
   std::vector<std::vector<Snapshot>> cycles() const;

@@ -1,6 +1,10 @@
 #include "coarse_grain/PhaseAccumulator.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <limits>
+
+#include "h5/H5Error.hpp"
 
 namespace granwave {
 
@@ -41,6 +45,45 @@ double PhaseAccumulator::pooledSnapshots(int phase) const {
   double s = 0;
   for (int b = 0; b < blocks_; ++b) s += snapshots(b, phase);
   return s;
+}
+
+// Only the visited cells are stored (most of a container is empty at most phases: the
+// paper's scene keeps 5 % of them), as their indices and sums.
+void PhaseAccumulator::save(h5::File& file, const std::string& group) const {
+  file.createGroup(group);
+  std::vector<double> sums;
+  std::vector<std::uint64_t> visited;
+  for (std::size_t k = 0; k < sums_.size(); ++k) {
+    const CellSums& c = sums_[k];
+    if (c.n == 0) continue;
+    visited.push_back(k);
+    sums.insert(sums.end(), {c.n, c.vx, c.vz, c.vv, c.vx2, c.w, c.w2});
+  }
+  file.writeAttribute<std::uint64_t>(group, "cells", sums_.size());
+  file.writeDataset(group + "/visited", visited, {visited.size()});
+  file.writeDataset(group + "/cell_sums", sums, {visited.size(), 7});
+  file.writeDataset(group + "/snapshots", snapshots_, {snapshots_.size()});
+  file.writeDataset(group + "/z_sum", z_sum_, {z_sum_.size()});
+  file.writeDataset(group + "/particles", particles_, {particles_.size()});
+}
+
+void PhaseAccumulator::restore(const h5::File& file, const std::string& group) {
+  // The shapes are checked: a checkpoint of another grid is refused by name.
+  if (file.readAttribute<std::uint64_t>(group, "cells") != sums_.size())
+    throw h5::H5Error(file.name() + ": " + group + " holds sums of another field grid");
+  const auto visited = file.readDataset<std::uint64_t>(group + "/visited");
+  const auto sums = file.readDataset<double>(group + "/cell_sums", {visited.size(), 7});
+  snapshots_ = file.readDataset<double>(group + "/snapshots", {snapshots_.size()});
+  z_sum_ = file.readDataset<double>(group + "/z_sum", {z_sum_.size()});
+  particles_ = file.readDataset<double>(group + "/particles", {particles_.size()});
+  std::fill(sums_.begin(), sums_.end(), CellSums{});
+  for (std::size_t v = 0; v < visited.size(); ++v) {
+    if (visited[v] >= sums_.size())
+      throw h5::H5Error(file.name() + ": " + group + "/visited names cell " +
+                        std::to_string(visited[v]) + " of " + std::to_string(sums_.size()));
+    const double* c = &sums[7 * v];
+    sums_[visited[v]] = {c[0], c[1], c[2], c[3], c[4], c[5], c[6]};
+  }
 }
 
 }  // namespace granwave

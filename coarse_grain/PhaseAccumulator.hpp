@@ -4,9 +4,11 @@
 // into means and variances afterwards (MercuryCG keeps fields that know their arithmetic in
 // the same way). Independent blocks of cycles give honest uncertainties.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "coarse_grain/FieldGrid.hpp"
+#include "h5/File.hpp"
 
 namespace granwave {
 
@@ -61,6 +63,10 @@ class PhaseAccumulator {
   // All blocks merged (block = -1 in the accessors of PhaseFields).
   CellSums pooled(int phase, int cell) const;
   double pooledSnapshots(int phase) const;
+
+  // Checkpoints: the sums as stored; restore() requires the same grid, phases and blocks.
+  void save(h5::File& file, const std::string& group) const;
+  void restore(const h5::File& file, const std::string& group);
 
  private:
   FieldGrid grid_;

@@ -1,7 +1,11 @@
 #include "coarse_grain/PhaseAverager.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <stdexcept>
+#include <string>
+
+#include "h5/H5Error.hpp"
 
 namespace granwave {
 
@@ -53,6 +57,31 @@ void PhaseAverager::observe(const Snapshot& s) {
   acc_.countSnapshot(block, wphase, zsum, s.size());
   for (int k = 0; k < s.size(); ++k)
     acc_.add(block, wphase, s.x[k], s.z[k], s.vx[k], s.vz[k], s.omega[k]);
+}
+
+void PhaseAverager::saveState(h5::File& file, const std::string& group) const {
+  acc_.save(file, group + "/sums");
+  file.writeDataset(group + "/cycle_heights", detector_.history(), {detector_.history().size()});
+  file.writeArrayAttribute<std::int64_t>(
+      group, "counters",
+      {start_cycle_, cycles_per_block_, pooled_cycles_, current_cycle_, cycle_samples_});
+  file.writeAttribute(group, "cycle_height_sum", cycle_height_sum_);
+}
+
+void PhaseAverager::restoreState(const h5::File& file, const std::string& group) {
+  acc_.restore(file, group + "/sums");
+  detector_ = SteadyStateDetector(cfg_.steady);
+  for (double h : file.readDataset<double>(group + "/cycle_heights")) detector_.addCycle(h);
+  const auto c = file.readArrayAttribute<std::int64_t>(group, "counters");
+  if (c.size() != 5)
+    throw h5::H5Error(file.name() + ": " + group + " counters hold " + std::to_string(c.size()) +
+                      " values, expected 5");
+  start_cycle_ = static_cast<int>(c[0]);
+  cycles_per_block_ = static_cast<int>(c[1]);
+  pooled_cycles_ = static_cast<int>(c[2]);
+  current_cycle_ = static_cast<int>(c[3]);
+  cycle_samples_ = static_cast<int>(c[4]);
+  cycle_height_sum_ = file.readAttribute<double>(group, "cycle_height_sum");
 }
 
 }  // namespace granwave

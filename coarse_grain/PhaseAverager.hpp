@@ -7,6 +7,7 @@
 // split into `blocks` consecutive blocks for uncertainties.
 #include "coarse_grain/PhaseAccumulator.hpp"
 #include "coarse_grain/SteadyStateDetector.hpp"
+#include "particles/Checkpointable.hpp"
 #include "particles/Snapshot.hpp"
 
 namespace granwave {
@@ -21,10 +22,12 @@ struct PhaseAveragerConfig {
   SteadyStateOptions steady;
 };
 
-class PhaseAverager : public SnapshotObserver {
+class PhaseAverager : public SnapshotObserver, public Checkpointable {
  public:
   explicit PhaseAverager(const PhaseAveragerConfig& config);
   void observe(const Snapshot& s) override;
+  void saveState(h5::File& file, const std::string& group) const override;
+  void restoreState(const h5::File& file, const std::string& group) override;
 
   const PhaseAccumulator& accumulator() const { return acc_; }
   const PhaseAveragerConfig& config() const { return cfg_; }

@@ -25,6 +25,8 @@ class SteadyStateDetector {
   // First steady cycle (the number of discarded cycles), or -1.
   int steadyFrom() const { return steady_from_; }
   int cycles() const { return static_cast<int>(h_.size()); }
+  // The cycle means added so far; feeding them to a fresh detector restores this one.
+  const std::vector<double>& history() const { return h_; }
 
  private:
   SteadyStateOptions opt_;

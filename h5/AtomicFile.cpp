@@ -36,6 +36,22 @@ File createOrRemove(const std::string& temporary, const std::string& target) {
   }
 }
 
+File copyAndOpen(const std::string& from, const std::string& temporary, const std::string& target) {
+  std::error_code ec;
+  std::filesystem::copy_file(from, temporary, std::filesystem::copy_options::overwrite_existing,
+                             ec);
+  if (ec) {
+    std::remove(temporary.c_str());
+    throw H5Error(from + ": cannot copy to " + temporary + " (" + ec.message() + ")");
+  }
+  try {
+    return File::openReadWrite(temporary, target);
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+}
+
 std::string directoryOf(const std::string& path) {
   const std::filesystem::path parent = std::filesystem::path(path).parent_path();
   return parent.empty() ? std::string(".") : parent.string();
@@ -47,6 +63,11 @@ AtomicFile::AtomicFile(std::string target)
     : target_(std::move(target)),
       temporary_(temporaryFor(target_)),
       file_(createOrRemove(temporary_, target_)) {}
+
+AtomicFile::AtomicFile(std::string target, const std::string& continue_from)
+    : target_(std::move(target)),
+      temporary_(temporaryFor(target_)),
+      file_(copyAndOpen(continue_from, temporary_, target_)) {}
 
 AtomicFile::~AtomicFile() {
   if (committed_) return;
@@ -68,6 +89,26 @@ void AtomicFile::commitTo(const std::string& path) {
                   std::strerror(errno) + ")");
   }
   committed_ = true;
+  syncPath(directoryOf(path), O_RDONLY | O_DIRECTORY);
+}
+
+void AtomicFile::copyTo(const std::string& path) {
+  if (committed_) throw H5Error(target_ + ": already committed");
+  file_.flush();
+  const std::string partial = path + ".tmp-" + std::to_string(::getpid());
+  std::error_code ec;
+  std::filesystem::copy_file(temporary_, partial, std::filesystem::copy_options::overwrite_existing,
+                             ec);
+  if (ec) {
+    std::remove(partial.c_str());
+    throw H5Error(target_ + ": cannot copy to " + partial + " (" + ec.message() + ")");
+  }
+  syncPath(partial, O_RDONLY);
+  if (std::rename(partial.c_str(), path.c_str()) != 0) {
+    const std::string reason = std::strerror(errno);
+    std::remove(partial.c_str());
+    throw H5Error(target_ + ": cannot rename " + partial + " to " + path + " (" + reason + ")");
+  }
   syncPath(directoryOf(path), O_RDONLY | O_DIRECTORY);
 }
 

@@ -13,6 +13,9 @@ namespace granwave::h5 {
 class AtomicFile {
  public:
   explicit AtomicFile(std::string target);
+  // Continues a file saved by copyTo(): its bytes are copied to the temporary, which is
+  // opened for appending (the saved copy itself stays untouched).
+  AtomicFile(std::string target, const std::string& continue_from);
   ~AtomicFile();
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
@@ -27,6 +30,10 @@ class AtomicFile {
   void commit() { commitTo(target_); }
   // Same, at another path (e.g. "RUN.h5.interrupted"); must be on the target's filesystem.
   void commitTo(const std::string& path);
+  // Flushes the file and publishes a copy of it, as it is now, at `path` (atomically; the
+  // file stays open for writing). A checkpoint: HDF5 gives no guarantee for a file killed
+  // while open, so a restart continues from this copy, not from the temporary.
+  void copyTo(const std::string& path);
 
  private:
   std::string target_;

@@ -1,7 +1,7 @@
 #pragma once
 // A chunked dataset [rows][row_shape...] with an unlimited first axis, appended to row by
 // row: the layout of H5MD time series (one row per recorded frame). Obtained from
-// File::createExtendible; the File must outlive it.
+// File::createExtendible (or reopened by File::openExtendible); the File must outlive it.
 #include <cstddef>
 #include <span>
 #include <string>
@@ -32,11 +32,13 @@ class ExtendibleDataset {
 
  private:
   friend class File;
-  ExtendibleDataset(Handle dataset, std::string file, std::string path, Shape row_shape)
+  ExtendibleDataset(Handle dataset, std::string file, std::string path, Shape row_shape,
+                    std::size_t rows = 0)
       : dataset_(std::move(dataset)),
         file_(std::move(file)),
         path_(std::move(path)),
-        row_shape_(std::move(row_shape)) {}
+        row_shape_(std::move(row_shape)),
+        rows_(rows) {}
 
   Handle dataset_;
   std::string file_;  // for messages

@@ -61,6 +61,19 @@ File File::openReadOnly(const std::string& path) {
 
 void File::fail(const std::string& what) const { h5::fail(name_, what); }
 
+File File::openReadWrite(const std::string& path, const std::string& display_name) {
+  silenceHdf5Errors();
+  const std::string name = display_name.empty() ? path : display_name;
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw H5Error(name + ": no such file");
+  const htri_t hdf5 = isHdf5(path);
+  if (hdf5 < 0) h5::fail(name, "cannot read file");
+  if (hdf5 == 0) throw H5Error(name + ": not an HDF5 file");
+  Handle fapl = strongCloseAccess(name);
+  hid_t id = H5Fopen(path.c_str(), H5F_ACC_RDWR, fapl.get());
+  return File(fileHandle(check(id, name, "cannot open HDF5 file for writing")), name);
+}
+
 void File::flush() {
   if (H5Fflush(file_.get(), H5F_SCOPE_GLOBAL) < 0) fail("cannot flush file");
 }

@@ -20,6 +20,8 @@ class File {
   static File create(const std::string& path, const std::string& display_name = "");
   // Opens an existing file read-only. H5Error if it is missing, not HDF5, or damaged.
   static File openReadOnly(const std::string& path);
+  // Opens an existing file for appending (a checkpoint's copy being continued).
+  static File openReadWrite(const std::string& path, const std::string& display_name = "");
 
   File(File&&) noexcept = default;
   File& operator=(File&&) noexcept = default;
@@ -67,6 +69,10 @@ class File {
   template <Element T>
   ExtendibleDataset<T> createExtendible(const std::string& path, const Shape& row_shape,
                                         std::size_t chunk_rows);
+
+  // Reopens a dataset made by createExtendible, to append after its current rows.
+  template <Element T>
+  ExtendibleDataset<T> openExtendible(const std::string& path);
 
   Shape shape(const std::string& path) const;
   // Reads the whole dataset; `expected` (kAnyExtent matches anything) is checked first.

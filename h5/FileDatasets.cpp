@@ -82,6 +82,20 @@ ExtendibleDataset<T> File::createExtendible(const std::string& path, const Shape
   return ExtendibleDataset<T>(std::move(dataset), name_, path, row_shape);
 }
 
+template <Element T>
+ExtendibleDataset<T> File::openExtendible(const std::string& path) {
+  Handle dataset = openDataset(path);
+  requireNumeric(dataset.get(), name_, path);
+  Handle space = dataspaceHandle(check(H5Dget_space(dataset.get()), name_, "no dataspace"));
+  const Shape shape = shapeOf(space.get(), name_);
+  std::vector<hsize_t> max_dims(shape.size());
+  if (shape.empty() || H5Sget_simple_extent_dims(space.get(), nullptr, max_dims.data()) < 0 ||
+      max_dims[0] != H5S_UNLIMITED)
+    throw H5Error(name_ + ": " + path + " is not an extendible dataset");
+  return ExtendibleDataset<T>(std::move(dataset), name_, path,
+                              Shape(shape.begin() + 1, shape.end()), shape[0]);
+}
+
 Shape File::shape(const std::string& path) const {
   Handle dataset = openDataset(path);
   Handle space = dataspaceHandle(check(H5Dget_space(dataset.get()), name_, "no dataspace"));
@@ -152,6 +166,7 @@ std::string File::readStringDataset(const std::string& path) const {
   template void File::writeDataset<T>(const std::string&, const std::vector<T>&, const Shape&); \
   template ExtendibleDataset<T> File::createExtendible<T>(const std::string&, const Shape&,     \
                                                           std::size_t);                         \
+  template ExtendibleDataset<T> File::openExtendible<T>(const std::string&);                    \
   template std::vector<T> File::readDataset<T>(const std::string&) const;                       \
   template std::vector<T> File::readDataset<T>(const std::string&, const Shape&) const;         \
   template std::vector<T> File::readRows<T>(const std::string&, std::size_t, std::size_t) const;

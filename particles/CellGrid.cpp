@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace granwave {
 
@@ -39,6 +41,37 @@ void CellGrid::remove(int p) {
   }
   if (next_[p] >= 0) prev_[next_[p]] = prev_[p];
   cell_[p] = -1;
+}
+
+void CellGrid::restore(const Lists& saved) {
+  const std::size_t n = cell_.size();
+  if (saved.head.size() != head_.size() || saved.next.size() != n || saved.prev.size() != n ||
+      saved.cell.size() != n)
+    throw std::invalid_argument("cell lists: saved for " + std::to_string(saved.head.size()) +
+                                " cells and " + std::to_string(saved.cell.size()) +
+                                " particles, the grid has " + std::to_string(head_.size()) +
+                                " and " + std::to_string(n));
+  // Walk every list: each particle must be reached exactly once, in the cell it names.
+  std::vector<char> seen(n, 0);
+  std::size_t reached = 0;
+  for (std::size_t c = 0; c < saved.head.size(); ++c) {
+    int previous = -1;
+    for (int p = saved.head[c]; p >= 0; p = saved.next[p]) {
+      if (static_cast<std::size_t>(p) >= n || seen[p] || saved.cell[p] != static_cast<int>(c) ||
+          saved.prev[p] != previous)
+        throw std::invalid_argument("cell lists: inconsistent at cell " + std::to_string(c));
+      seen[p] = 1;
+      ++reached;
+      previous = p;
+    }
+  }
+  if (reached != n)
+    throw std::invalid_argument("cell lists: " + std::to_string(n - reached) +
+                                " particles are in no cell");
+  head_ = saved.head;
+  next_ = saved.next;
+  prev_ = saved.prev;
+  cell_ = saved.cell;
 }
 
 int CellGrid::neighbours(int cell, Neighbour out[9]) const {

@@ -48,6 +48,17 @@ class CellGrid {
   };
   int neighbours(int cell, Neighbour out[9]) const;
 
+  // The linked lists exactly as stored (checkpoints): the order of particles in a cell is
+  // the order pairs are predicted in, which decides between pair events at exactly equal
+  // times (lattice starts); a restart keeps it rather than rebuilding the lists.
+  struct Lists {
+    std::vector<int> head, next, prev, cell;
+  };
+  Lists lists() const { return {head_, next_, prev_, cell_}; }
+  // std::invalid_argument unless `saved` fits this grid and its particle count and every
+  // particle is linked into the cell it names.
+  void restore(const Lists& saved);
+
  private:
   CellGeometry g_;
   std::vector<int> head_, next_, prev_, cell_;

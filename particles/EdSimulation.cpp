@@ -11,34 +11,8 @@ namespace granwave {
 EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& init)
     : cfg_(config), rotation_(config.tangential.friction > 0.0) {
   const int n = init.size();
+  setUp(n);
   const double d = cfg_.diameter;
-  if (n < 1) throw std::invalid_argument("a simulation needs at least one particle");
-  if (cfg_.periodic_z && cfg_.plate.amplitude > 0)
-    throw std::invalid_argument(
-        "container.periodic_z needs an undriven scene (drive.frequency = 0)");
-
-  // Lab-frame grid covering every height a centre can reach: [-A, L_z + A] with walls,
-  // [0, L_z) periodic (coarse-graining.md uses the same extent).
-  CellGeometry g;
-  g.periodic_x = cfg_.periodic_x;
-  g.periodic_z = cfg_.periodic_z;
-  g.nx = cellsAlong(cfg_.width, d);
-  g.wx = cfg_.width / g.nx;
-  const double A = cfg_.plate.amplitude;
-  const double span = cfg_.periodic_z ? cfg_.height : cfg_.height + 2 * A;
-  g.nz = cellsAlong(span, d);
-  g.wz = span / g.nz;
-  g.z0 = cfg_.periodic_z ? 0.0 : -A;
-  if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
-    throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
-  cells_ = CellGrid(g, n);
-
-  const double aw2 = cfg_.plate.maxAcceleration();
-  bottom_curvature_ = cfg_.gravity + aw2;
-  lid_curvature_ = std::max(0.0, aw2 - cfg_.gravity);
-  pair_curvature_ = cfg_.gravity + aw2;
-  ride_curvature_ = aw2;
-
   p_.resize(n);
   ev_.resize(n);
   queue_.reset(n);
@@ -85,6 +59,78 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
     }
   }
   for (int i = 0; i < n; ++i) predict(i);
+}
+
+EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
+    : cfg_(config), rotation_(config.tangential.friction > 0.0) {
+  const int n = static_cast<int>(saved.particles.size());
+  setUp(n);
+  if (saved.events.size() != saved.particles.size())
+    throw std::invalid_argument(
+        fmt::format("saved engine state: {} events for {} particles", saved.events.size(), n));
+  queue_.restore(saved.queue);
+  if (queue_.size() != n)
+    throw std::invalid_argument(fmt::format(
+        "saved engine state: the event queue holds {} particles, the state {}", queue_.size(), n));
+  cells_.restore(saved.cells);
+  if (!(saved.now >= 0) || !(saved.next_record >= saved.now))
+    throw std::invalid_argument(
+        fmt::format("saved engine state: clock at {} s with the next record at {} s", saved.now,
+                    saved.next_record));
+  p_ = saved.particles;
+  ev_ = saved.events;
+  obs_ = saved.observables;
+  now_ = saved.now;
+  records_ = saved.records;
+  next_record_ = saved.next_record;
+  virial_ = saved.virial;
+  virial_since_ = saved.virial_since;
+}
+
+EngineState EdSimulation::state() const {
+  EngineState s;
+  s.particles = p_;
+  s.events = ev_;
+  s.queue = queue_.layout();
+  s.cells = cells_.lists();
+  s.observables = obs_;
+  s.now = now_;
+  s.records = records_;
+  s.next_record = next_record_;
+  s.virial = virial_;
+  s.virial_since = virial_since_;
+  return s;
+}
+
+// Checks the config, builds the (empty) cell grid and the curvature bounds for n particles.
+void EdSimulation::setUp(int n) {
+  const double d = cfg_.diameter;
+  if (n < 1) throw std::invalid_argument("a simulation needs at least one particle");
+  if (cfg_.periodic_z && cfg_.plate.amplitude > 0)
+    throw std::invalid_argument(
+        "container.periodic_z needs an undriven scene (drive.frequency = 0)");
+
+  // Lab-frame grid covering every height a centre can reach: [-A, L_z + A] with walls,
+  // [0, L_z) periodic (coarse-graining.md uses the same extent).
+  CellGeometry g;
+  g.periodic_x = cfg_.periodic_x;
+  g.periodic_z = cfg_.periodic_z;
+  g.nx = cellsAlong(cfg_.width, d);
+  g.wx = cfg_.width / g.nx;
+  const double A = cfg_.plate.amplitude;
+  const double span = cfg_.periodic_z ? cfg_.height : cfg_.height + 2 * A;
+  g.nz = cellsAlong(span, d);
+  g.wz = span / g.nz;
+  g.z0 = cfg_.periodic_z ? 0.0 : -A;
+  if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
+    throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
+  cells_ = CellGrid(g, n);
+
+  const double aw2 = cfg_.plate.maxAcceleration();
+  bottom_curvature_ = cfg_.gravity + aw2;
+  lid_curvature_ = std::max(0.0, aw2 - cfg_.gravity);
+  pair_curvature_ = cfg_.gravity + aw2;
+  ride_curvature_ = aw2;
 }
 
 void EdSimulation::advance(int i, double t) {
@@ -222,7 +268,8 @@ void EdSimulation::advanceTo(double t) {
   now_ = t;
 }
 
-RunStatus EdSimulation::run(const std::atomic<bool>* interrupt) {
+RunStatus EdSimulation::run(const std::atomic<bool>* interrupt,
+                            const std::function<bool()>& pause) {
   RunStatus st;
   const double end = cfg_.duration;
   const double eps = 1e-12 * std::max(end, cfg_.record_interval);
@@ -243,6 +290,13 @@ RunStatus EdSimulation::run(const std::atomic<bool>* interrupt) {
     }
     if (interrupt && interrupt->load(std::memory_order_relaxed)) {
       st.interrupted = true;
+      break;
+    }
+    // Only here, between a record and the next advance, is the whole state in the saved
+    // fields (now_ = the record time, next_record_ set): a checkpoint taken now and a
+    // run() called again continue exactly as if no pause had happened.
+    if (pause && pause()) {
+      st.paused = true;
       break;
     }
   }

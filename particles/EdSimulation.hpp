@@ -11,10 +11,12 @@
 // the state. Cost per event O(log N), memory O(N).
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "particles/CellGrid.hpp"
 #include "particles/CollisionRule.hpp"
+#include "particles/EngineState.hpp"
 #include "particles/Event.hpp"
 #include "particles/EventQueue.hpp"
 #include "particles/ParticleState.hpp"
@@ -50,6 +52,7 @@ EngineConfig engineConfig(const Scene& scene);
 struct RunStatus {
   bool completed = false;    // reached the duration
   bool interrupted = false;  // stopped by the interrupt flag
+  bool paused = false;       // stopped because the pause predicate asked (a checkpoint)
   double time = 0;
   std::uint64_t events = 0;
 };
@@ -57,15 +60,22 @@ struct RunStatus {
 class EdSimulation {
  public:
   EdSimulation(const EngineConfig& config, const InitialCondition& initial);
+  // Continues a run from a state saved by state() under the same config (checkpoints).
+  // std::invalid_argument if the state does not fit the config.
+  EdSimulation(const EngineConfig& config, const EngineState& saved);
 
   void addObserver(SnapshotObserver* observer) { observers_.push_back(observer); }
   // Runs to config.duration, recording every record_interval (t = 0 included).
-  RunStatus run(const std::atomic<bool>* interrupt = nullptr);
+  // Stops early after a record when *interrupt is set, or when pause() returns true (it
+  // is asked once per record); a later run() continues exactly where this one stopped.
+  RunStatus run(const std::atomic<bool>* interrupt = nullptr,
+                const std::function<bool()>& pause = {});
   // Processes events up to time t >= now() (no recording); for tests and benchmarks.
   // std::invalid_argument if t < now().
   void advanceTo(double t);
 
   Snapshot snapshot() const;  // extrapolated to now()
+  EngineState state() const;  // everything a restart needs, as stored
   double now() const { return now_; }
   const Observables& counters() const { return obs_; }
   const EngineConfig& config() const { return cfg_; }
@@ -75,6 +85,7 @@ class EdSimulation {
   Vec2 velocity(int i) const;
 
  private:
+  void setUp(int particles);
   // prediction (EventPrediction.cpp)
   void predict(int i);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;

@@ -23,6 +23,17 @@ class EventQueue {
   void update(int id, double time);
   int size() const { return static_cast<int>(heap_.size()); }
 
+  // The heap exactly as stored, in heap order (checkpoints): events at equal times leave it
+  // in the order this layout gives, so a restored run only continues bit-identically from the
+  // same layout, not from a heap rebuilt from the keys.
+  struct Layout {
+    std::vector<double> keys;
+    std::vector<int> ids;
+  };
+  Layout layout() const;
+  // std::invalid_argument unless `saved` is a min-heap holding each of 0..n-1 once.
+  void restore(const Layout& saved);
+
  private:
   struct Node {
     double key;

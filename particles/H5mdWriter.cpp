@@ -44,6 +44,12 @@ Series<V> createSeries(h5::File& file, const std::string& group, const h5::Shape
   return series;
 }
 
+template <h5::Element V>
+Series<V> openSeries(h5::File& file, const std::string& group) {
+  return {file.openExtendible<std::int64_t>(group + "/step"),
+          file.openExtendible<double>(group + "/time"), file.openExtendible<V>(group + "/value")};
+}
+
 std::string authorName(const RunProvenance& provenance) {
   if (!provenance.author.empty()) return provenance.author;
   const char* user = std::getenv("USER");
@@ -88,6 +94,9 @@ void writeParameters(h5::File& file, const std::string& scene_toml,
 struct H5mdWriter::State {
   State(std::string target, BoxInfo box_info, int trajectory_stride)
       : atomic(std::move(target)), box(box_info), stride(trajectory_stride) {}
+  State(std::string target, const std::string& continue_from, BoxInfo box_info,
+        int trajectory_stride)
+      : atomic(std::move(target), continue_from), box(box_info), stride(trajectory_stride) {}
 
   // Declared first so it is destroyed last: the datasets below close before the
   // unfinished temporary file is deleted.
@@ -116,6 +125,7 @@ struct H5mdWriter::State {
 
   h5::File& file() { return atomic.file(); }
   void createObservables();
+  void reopenAll();
   void checkShape(const Snapshot& snapshot);
   void bufferObservables(const Snapshot& snapshot);
   void flushObservables();
@@ -141,6 +151,28 @@ void H5mdWriter::State::createObservables() {
   file().writeStringArrayAttribute(h5md::kCollisions + "/value", "columns", columns);
   pending_reals.resize(reals.size());
   pending_counts.resize(counts.size());
+}
+
+// The datasets of a checkpoint copy, in the order createObservables and createTrajectories
+// made them; the counts follow from their rows.
+void H5mdWriter::State::reopenAll() {
+  h5::File& f = file();
+  edges = openSeries<double>(f, h5md::kEdges);
+  for (const auto& observable : h5md::kRealObservables)
+    reals.push_back(openSeries<double>(f, h5md::observableGroup(observable.name)));
+  for (const auto& observable : h5md::kCountObservables)
+    counts.push_back(openSeries<std::uint64_t>(f, h5md::observableGroup(observable.name)));
+  collisions = openSeries<std::uint64_t>(f, h5md::kCollisions);
+  pending_reals.resize(reals.size());
+  pending_counts.resize(counts.size());
+  records = collisions.step.rows();
+  if (f.exists(h5md::kPosition)) {
+    position = openSeries<double>(f, h5md::kPosition);
+    velocity = openSeries<double>(f, h5md::kVelocity);
+    angular_velocity = openSeries<double>(f, h5md::kAngularVelocity);
+    frames = position.step.rows();
+    particles = static_cast<int>(position.value.rowShape().at(0));
+  }
 }
 
 void H5mdWriter::State::checkShape(const Snapshot& snapshot) {
@@ -246,7 +278,24 @@ H5mdWriter::H5mdWriter(std::string path, std::string scene_toml, RunProvenance p
   writeParameters(file, scene_toml, provenance);
 }
 
+H5mdWriter::H5mdWriter(std::string path, const std::string& checkpoint_copy, BoxInfo box,
+                       int trajectory_stride) {
+  if (trajectory_stride < 1) {
+    throw std::invalid_argument(path + ": trajectory stride must be >= 1, got " +
+                                std::to_string(trajectory_stride));
+  }
+  state_ = std::make_unique<State>(std::move(path), checkpoint_copy, box, trajectory_stride);
+  state_->reopenAll();
+}
+
 H5mdWriter::~H5mdWriter() = default;
+
+void H5mdWriter::checkpoint(const std::string& copy_path) {
+  State& s = *state_;
+  if (s.finished) throw std::logic_error(s.atomic.target() + ": checkpoint() after finish()");
+  s.flushObservables();
+  s.atomic.copyTo(copy_path);
+}
 
 void H5mdWriter::observe(const Snapshot& snapshot) {
   State& s = *state_;

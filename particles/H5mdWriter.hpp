@@ -19,6 +19,11 @@ class H5mdWriter : public SnapshotObserver {
   // snapshot goes into the trajectory when snapshot.step % k == 0. Throws h5::H5Error.
   H5mdWriter(std::string path, std::string scene_toml, RunProvenance provenance, BoxInfo box,
              int trajectory_stride);
+  // Continues the run file from a copy saved by checkpoint() (a restarted run): the next
+  // observe() appends after the copy's records; the result is the file an uninterrupted
+  // run writes, dataset for dataset. Throws h5::H5Error if the copy is not such a file.
+  H5mdWriter(std::string path, const std::string& checkpoint_copy, BoxInfo box,
+             int trajectory_stride);
   ~H5mdWriter() override;
   H5mdWriter(const H5mdWriter&) = delete;
   H5mdWriter& operator=(const H5mdWriter&) = delete;
@@ -32,6 +37,10 @@ class H5mdWriter : public SnapshotObserver {
   // interrupted run saved as RUN.h5.interrupted).
   void finish(bool complete, const std::string& summary = "",
               const std::string& final_path_override = "");
+
+  // Writes out the buffered observables and saves a copy of the file as it is now at
+  // `copy_path` (atomically), for a restart to continue from.
+  void checkpoint(const std::string& copy_path);
 
   const std::string& path() const;
   std::size_t recordCount() const;

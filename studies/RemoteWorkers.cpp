@@ -83,7 +83,7 @@ void RemoteWorkers::stopAll() {
 }
 
 void workerLoop(const MpiSession&, const std::vector<RunRecord>& records,
-                std::vector<std::string> (*arguments)(const RunRecord&)) {
+                const std::function<std::vector<std::string>(const RunRecord&)>& arguments) {
   const std::string exe = selfExecutable();
   for (;;) {
     long long i = -1;
@@ -125,7 +125,7 @@ void RemoteWorkers::dispatch(std::size_t) { throw std::logic_error("no worker ra
 bool RemoteWorkers::poll(std::size_t&, ChildOutcome&) { return false; }
 void RemoteWorkers::stopAll() {}
 void workerLoop(const MpiSession&, const std::vector<RunRecord>&,
-                std::vector<std::string> (*)(const RunRecord&)) {}
+                const std::function<std::vector<std::string>(const RunRecord&)>&) {}
 
 #endif
 

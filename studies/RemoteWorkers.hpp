@@ -7,6 +7,7 @@
 // writes records, results.h5 and the report. Without MPI (or outside mpirun) there is one rank
 // and the same study uses local child processes only.
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -54,6 +55,6 @@ class RemoteWorkers {
 // A worker rank's loop: run each index it is given (the child arguments from `arguments`)
 // until told to stop.
 void workerLoop(const MpiSession& mpi, const std::vector<RunRecord>& records,
-                std::vector<std::string> (*arguments)(const RunRecord&));
+                const std::function<std::vector<std::string>(const RunRecord&)>& arguments);
 
 }  // namespace granwave

@@ -15,10 +15,11 @@
 #include "studies/ChildProcess.hpp"
 #include "studies/InterruptFlag.hpp"
 #include "studies/RemoteWorkers.hpp"
+#include "studies/RunCheckpoint.hpp"
 
 namespace granwave {
 
-std::vector<std::string> childArguments(const RunRecord& r) {
+std::vector<std::string> childArguments(const RunRecord& r, double checkpoint_every) {
   const RunRequest& q = r.request;
   if (q.kind == RunKind::Hydro) return {"hydro", r.scenePath(), "-o", r.hydroPath(), "-q"};
   if (q.kind == RunKind::Lammps) {
@@ -28,18 +29,14 @@ std::vector<std::string> childArguments(const RunRecord& r) {
     a.insert(a.end(), {"-var", "out", r.lammpsPath()});
     return a;
   }
-  if (!q.fields) return {"simulate", r.scenePath(), "-o", r.runPath(), "-q"};
-  return {"simulate",
-          r.scenePath(),
-          "-o",
-          r.runPath(),
-          "--fields",
-          r.fieldsPath(),
-          "--fields-period",
-          std::to_string(q.window_cycles),
-          "--fields-blocks",
-          std::to_string(q.blocks),
-          "-q"};
+  std::vector<std::string> a{"simulate", r.scenePath(), "-o", r.runPath(), "-q"};
+  if (q.fields)
+    a.insert(a.end(),
+             {"--fields", r.fieldsPath(), "--fields-period", std::to_string(q.window_cycles),
+              "--fields-blocks", std::to_string(q.blocks)});
+  if (checkpoint_every > 0)
+    a.insert(a.end(), {"--checkpoint-every", fmt::format("{}", checkpoint_every)});
+  return a;
 }
 
 std::vector<RunRecord> planRecords(const std::vector<RunRequest>& requests, const RunCache& cache) {
@@ -98,9 +95,22 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
     std::ofstream scene(r.scenePath());
     scene << sceneToToml(r.request.scene);
   };
+  // A run continued from a checkpoint costs what it had spent before, too.
+  std::map<std::size_t, std::pair<double, double>> earlier_cost;
+  auto start = [&](std::size_t i) {
+    RunRecord& r = records[i];
+    writeScene(r);
+    std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
+    if (r.request.kind == RunKind::Particles) earlier_cost[i] = checkpointedCost(r.runPath());
+  };
   // One finished run (local or remote): record it, unless it was interrupted.
   std::size_t done = 0;
-  auto finish = [&](RunRecord& r, const ChildOutcome& out) {
+  auto finish = [&](RunRecord& r, ChildOutcome out) {
+    const auto earlier = earlier_cost.find(static_cast<std::size_t>(&r - records.data()));
+    if (earlier != earlier_cost.end()) {
+      out.wall += earlier->second.first;
+      out.cpu += earlier->second.second;
+    }
     // Only the outcomes the same scene and build would repeat are results and cached: success
     // (0), a deterministic error (1: e.g. no steady cycles; 2: scene), collapse (3), solver
     // failure (4). Anything else (interrupted, killed, could not start) is not cached.
@@ -141,19 +151,18 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
     while (!pending.empty() && remote && remote->idle() > 0) {
       const std::size_t i = pending.front();
       pending.pop_front();
-      writeScene(records[i]);
-      std::filesystem::remove(records[i].runPath() + ".interrupted");
+      start(i);
       remote->dispatch(i);
     }
     while (!pending.empty() && static_cast<int>(running.size()) < opt.jobs) {
-      RunRecord& r = records[pending.front()];
+      const std::size_t i = pending.front();
       pending.pop_front();
-      writeScene(r);
+      start(i);
+      RunRecord& r = records[i];
       std::filesystem::remove(r.logPath());
-      std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
       const std::string& program = r.request.kind == RunKind::Lammps ? r.request.program : exe;
-      running.push_back({static_cast<std::size_t>(&r - records.data()),
-                         ChildProcess(program, childArguments(r), r.logPath())});
+      running.push_back(
+          {i, ChildProcess(program, childArguments(r, opt.checkpoint_every), r.logPath())});
     }
     bool reaped = false;
     for (auto it = running.begin(); it != running.end();) {

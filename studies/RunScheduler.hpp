@@ -19,6 +19,9 @@ class StudyInterrupted : public std::runtime_error {
 struct SchedulerOptions {
   int jobs = 1;  // local runs at a time
   bool quiet = false;
+  // Particle runs checkpoint every this many seconds of wall time (0 = never), so a killed
+  // study continues its unfinished runs where they stood (studies/RunCheckpoint.hpp).
+  double checkpoint_every = 0;
 };
 
 class RemoteWorkers;
@@ -31,6 +34,6 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
 std::vector<RunRecord> planRecords(const std::vector<RunRequest>& requests, const RunCache& cache);
 
 // The command line of the child process that makes a run.
-std::vector<std::string> childArguments(const RunRecord& record);
+std::vector<std::string> childArguments(const RunRecord& record, double checkpoint_every = 0);
 
 }  // namespace granwave

@@ -1,6 +1,8 @@
 #pragma once
 // `granwave simulate SCENE.toml [-o RUN.h5] [--set section.key=value]...`: runs the ED
-// engine on a scene, writes the H5MD run atomically and prints a summary on stdout.
+// engine on a scene, writes the H5MD run atomically and prints a summary on stdout. With
+// --checkpoint-every S it saves a checkpoint every S seconds of wall time (and on Ctrl-C),
+// and the same command continues a killed run from it (studies/RunCheckpoint.hpp).
 #include <string>
 #include <vector>
 
@@ -19,6 +21,7 @@ struct SimulateOptions {
   std::string fields;      // live phase-averaged fields file (empty = none)
   int fields_period = 2;   // cycles per phase window
   int fields_blocks = 5;
+  double checkpoint_every = 0;  // s of wall time between checkpoints; 0 = none
 };
 
 void addSimulateCommand(CLI::App& app, SimulateOptions& options);

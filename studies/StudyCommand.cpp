@@ -118,6 +118,11 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
                   "OUTDIR/runs)");
   cmd->add_option("-j,--jobs", opt.jobs, "Runs at a time (default: [study] jobs, else all cores)")
       ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--checkpoint-every", opt.checkpoint_every,
+                  "Seconds of wall time between checkpoints of a particle run, from which a "
+                  "killed study continues it (0 = none)")
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress lines");
   cmd->add_flag("--no-report", opt.no_report, "Write results.h5 only, no report.html");
 }
@@ -141,12 +146,14 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   const std::string build_id = buildIdentity();
   const RunCache cache(cache_dir, build_id);
   if (mpi.rank() > 0) {
-    workerLoop(mpi, planRecords(plan, cache), &childArguments);
+    workerLoop(mpi, planRecords(plan, cache),
+               [&opt](const RunRecord& r) { return childArguments(r, opt.checkpoint_every); });
     return 0;
   }
   const auto t0 = std::chrono::steady_clock::now();
   RemoteWorkers remote(mpi);
-  const RunSet runs(runAll(plan, cache, {jobs, opt.quiet}, mpi.size() > 1 ? &remote : nullptr));
+  const RunSet runs(runAll(plan, cache, {jobs, opt.quiet, opt.checkpoint_every},
+                           mpi.size() > 1 ? &remote : nullptr));
   // A run that did not finish (killed, could not start) is not a result: no results.h5.
   int unfinished = 0;
   std::string example;

@@ -12,9 +12,10 @@ namespace granwave {
 
 struct StudyOptions {
   std::string study_path;
-  std::string output;  // default: the study file's stem, in the working directory
-  std::string cache;   // run cache; default OUTDIR/runs (studies may share one)
-  int jobs = 0;        // 0 = number of cores
+  std::string output;             // default: the study file's stem, in the working directory
+  std::string cache;              // run cache; default OUTDIR/runs (studies may share one)
+  int jobs = 0;                   // 0 = number of cores
+  double checkpoint_every = 300;  // s of wall time between a particle run's checkpoints
   bool quiet = false;
   bool no_report = false;  // results.h5 only (no Python needed)
 };

@@ -12,6 +12,7 @@ mkdir -p "$work"
 "$granwave" study "$study" -o "$work/serial" -q -j 1 --no-report
 "$mpirun" --allow-run-as-root --oversubscribe -n 2 "$granwave" study "$study" \
   -o "$work/mpi" -q --no-report
-h5diff --exclude-path /wave_fronts/cost "$work/serial/results.h5" "$work/mpi/results.h5" \
-  /results /results
+# Bit for bit (h5diff would pass datasets of different shapes as "not comparable").
+"$(dirname "$0")/../tools/h5_identical.py" "$work/serial/results.h5" "$work/mpi/results.h5" \
+  --only /results --exclude /results/wave_fronts/cost
 echo "mpi_matches_serial: ok"

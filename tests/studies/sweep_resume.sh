@@ -1,21 +1,24 @@
 #!/bin/sh
 # A sweep killed with SIGKILL half way and run again gives the same results as an
 # uninterrupted one: the same /results numbers (run costs aside) and bit-identical particle
-# runs; no run of the killed study survives it (its children get SIGTERM).
+# runs; no run of the killed study survives it (its children get SIGTERM, checkpoint and
+# stop), and the particle run it was making continues from its checkpoint.
 # Usage: sweep_resume.sh GRANWAVE STUDY.toml WORKDIR
 set -eu
 granwave=$1
 study=$2
 work=$3
+identical="$(dirname "$0")/../tools/h5_identical.py"
 rm -rf "$work"
 mkdir -p "$work"
-"$granwave" study "$study" -o "$work/whole" -q -j 2 --no-report
+"$granwave" study "$study" -o "$work/whole" -q -j 2 --no-report --checkpoint-every 0.2
 
-"$granwave" study "$study" -o "$work/killed" -q -j 2 --no-report &
+"$granwave" study "$study" -o "$work/killed" -q -j 2 --no-report --checkpoint-every 0.2 &
 pid=$!
-# Kill once some but not all runs are recorded.
+# Kill once some but not all runs are recorded and a particle run is being made.
 i=0
-while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ]; do
+while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ] ||
+  ! ls "$work/killed/runs" | grep -q '^particles-.*\.h5\.tmp-'; do
   sleep 0.05
   i=$((i + 1))
   [ "$i" -lt 1200 ] || { echo "sweep_resume: no run finished within 60 s" >&2; exit 1; }
@@ -32,26 +35,32 @@ if pgrep -f "$work/killed/runs" >/dev/null; then
   exit 1
 fi
 done_before=$(ls "$work/killed/runs" | grep -c '\.done$')
-"$granwave" study "$study" -o "$work/killed" -j 2 --no-report 2> "$work/resume.log" >/dev/null
+"$granwave" study "$study" -o "$work/killed" -j 2 --no-report --checkpoint-every 0.2 2> "$work/resume.log" >/dev/null
 grep -q "$done_before reused" "$work/resume.log" || {
   echo "sweep_resume: the resumed study did not reuse the $done_before finished runs:" >&2
   head -1 "$work/resume.log" >&2
   exit 1
 }
-# Same numbers; the cost chart's CPU times are measurements of this machine, not results
-# (the excluded path is relative to the compared /results).
-h5diff --exclude-path /wave_fronts/cost "$work/whole/results.h5" \
-  "$work/killed/results.h5" /results /results
-# Particle runs: identical trajectories, observables and fields (h5diff compares exactly);
-# only the provenance differs (it names the output directory of each study).
+# Same numbers; the cost chart's CPU times are measurements of this machine, not results.
+"$identical" "$work/whole/results.h5" "$work/killed/results.h5" --only /results \
+  --exclude /results/wave_fronts/cost
+grep -l "continuing from" "$work"/killed/runs/particles-*.log > /dev/null 2>&1 || {
+  echo "sweep_resume: no particle run continued from a checkpoint" >&2
+  exit 1
+}
+# Particle runs: bit-identical trajectories, observables and fields; only the provenance
+# differs (it names the output directory of each study).
 for f in "$work"/whole/runs/particles-*.h5; do
   g="$work/killed/runs/$(basename "$f")"
   case "$f" in
-    *.fields.h5) h5diff --exclude-path /parameters "$f" "$g" >/dev/null ;;
-    *) h5diff "$f" "$g" /particles /particles >/dev/null && h5diff "$f" "$g" /observables /observables >/dev/null ;;
+    *.fields.h5) "$identical" "$f" "$g" --exclude /parameters ;;
+    *) "$identical" "$f" "$g" --only /particles --only /observables ;;
   esac || {
     echo "sweep_resume: $(basename "$f") differs after the resume" >&2
     exit 1
   }
 done
-echo "sweep_resume: ok ($done_before runs kept across SIGKILL)"
+leftovers=$(ls "$work/killed/runs" | grep -e checkpoint -e '\.tmp-' -e '\.lock$' || true)
+[ -z "$leftovers" ] || { echo "sweep_resume: left in the cache: $leftovers" >&2; exit 1; }
+echo "sweep_resume: ok ($done_before runs kept across SIGKILL; continued:" \
+  "$(grep -h "continuing from" "$work"/killed/runs/particles-*.log | sed 's/.* at t = //' | tr '\n' ' '))"

@@ -1,0 +1,30 @@
+#pragma once
+// The engine's complete dynamic state: what a checkpoint must hold for a restored run to
+// continue bit-identically. Particles are advanced lazily (each carries its own time) and the
+// queue's layout and the cell lists decide between events at exactly equal times, so all of
+// them are kept as stored, not recomputed. Everything else
+// (cell geometry, curvature bounds) follows from the EngineConfig.
+#include <cstdint>
+#include <vector>
+
+#include "particles/CellGrid.hpp"
+#include "particles/Event.hpp"
+#include "particles/EventQueue.hpp"
+#include "particles/ParticleState.hpp"
+#include "particles/Snapshot.hpp"
+
+namespace granwave {
+
+struct EngineState {
+  std::vector<ParticleState> particles;
+  std::vector<Event> events;  // each particle's one scheduled event
+  EventQueue::Layout queue;
+  CellGrid::Lists cells;
+  Observables observables;  // cumulative counters (the per-record ones are recomputed)
+  double now = 0;           // s
+  std::uint64_t records = 0;
+  double next_record = 0;  // s
+  double virial = 0, virial_since = 0;
+};
+
+}  // namespace granwave
