@@ -192,6 +192,7 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
       f.writeAttribute<double>(g, "mean_abs_psi6", pr.state.mean_abs_psi6);
       f.writeAttribute<double>(g, "mean_relative_displacement_d",
                                pr.state.mean_relative_displacement_d);
+      f.writeAttribute<double>(g, "bonds_kept", pr.state.bonds_kept);
     }
   }
 

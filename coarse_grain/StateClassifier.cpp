@@ -73,6 +73,27 @@ std::string_view toString(LayerState state) {
   return "unknown";
 }
 
+double bondsKept(const Snapshot& before, const Snapshot& after, double width, bool periodic_x,
+                 double bond_cutoff, double broken_beyond) {
+  if (before.x.size() != after.x.size() || before.z.size() != after.z.size() ||
+      before.x.size() != before.z.size())
+    throw std::invalid_argument("bond survival: snapshots hold " + std::to_string(before.x.size()) +
+                                " and " + std::to_string(after.x.size()) +
+                                " particles (positions x, z); the same particles are needed");
+  const std::vector<std::vector<int>> bonds =
+      neighboursWithin(before.x, before.z, bond_cutoff, width, periodic_x);
+  long total = 0, kept = 0;
+  for (std::size_t j = 0; j < bonds.size(); ++j)
+    for (int k : bonds[j]) {
+      if (static_cast<std::size_t>(k) <= j) continue;  // each pair once
+      double rx = after.x[j] - after.x[k];
+      if (periodic_x) rx -= width * std::round(rx / width);
+      ++total;
+      kept += std::hypot(rx, after.z[j] - after.z[k]) <= broken_beyond;
+    }
+  return total > 0 ? static_cast<double>(kept) / static_cast<double>(total) : 1.0;
+}
+
 double meanRelativeDisplacement(const Snapshot& before, const Snapshot& after, double width,
                                 bool periodic_x, double neighbour_cutoff) {
   const Displacements d = displacements(before, after, width, periodic_x);
@@ -104,7 +125,9 @@ StateResult classifyState(const std::vector<Snapshot>& cycles, double width, dou
     r.mean_abs_psi6 += h.mean_abs_psi6 / K;
     r.abs_mean_psi6 += h.abs_mean_psi6 / K;
   }
-  if (r.mean_relative_displacement_d > opt.mobility_threshold)
+  r.bonds_kept = bondsKept(cycles.front(), cycles.back(), width, periodic_x,
+                           opt.bond_cutoff * diameter, opt.broken_beyond * diameter);
+  if (r.bonds_kept < opt.caged_fraction)
     r.state = LayerState::liquid_like;
   else if (r.mean_abs_psi6 > opt.crystal_threshold)
     r.state = LayerState::crystal;

@@ -107,6 +107,7 @@ LayerPatterns readLayerPatterns(const std::string& path) {
   r.kinks = static_cast<int>(f.readAttribute<std::int64_t>(g, "kinks"));
   r.psi6 = f.readAttribute<double>(g, "mean_abs_psi6");
   r.mobility_d = f.readAttribute<double>(g, "mean_relative_displacement_d");
+  r.bonds_kept = f.readAttribute<double>(g, "bonds_kept");
   return r;
 }
 

@@ -64,6 +64,9 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
                      in.simulated / std::max(in.wall, 1e-9));
     r += fmt::format("events          {}  ({:.3g} per wall s)\n", o.events,
                      o.events / std::max(in.wall, 1e-9));
+    if (in.checkpoints > 0)
+      r += fmt::format("checkpoints     {} written, {:.3f} s of the wall time\n", in.checkpoints,
+                       in.checkpoint_wall);
   } else {
     r += fmt::format("events          {}\n", o.events);
   }

@@ -20,6 +20,9 @@ struct RunSummaryInput {
   std::vector<double> com_height;   // one per record (driven: M per cycle)
   double energy_balance_error = 0;  // J, |E - E0 - W + D|
   double initial_energy = 0;
+  // Checkpoints written by this process and the wall time they took (timing lines only).
+  int checkpoints = 0;
+  double checkpoint_wall = 0;  // s
 };
 
 // Period of the centre-of-mass motion, if the run is driven and long enough (12 cycles

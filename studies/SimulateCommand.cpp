@@ -148,12 +148,17 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   auto secondsSince = [](std::chrono::steady_clock::time_point t) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
   };
+  int checkpoints_written = 0;
+  double checkpoint_wall = 0;
   auto saveCheckpoint = [&] {
+    const auto started = std::chrono::steady_clock::now();
     CheckpointLedger ledger = loaded.ledger;
     ledger.initial_energy = initial_energy;
     ledger.wall_seconds += secondsSince(t0);
     ledger.cpu_seconds += processCpuSeconds() - cpu0;
     loaded.ledger.checkpoints = checkpoint->save(sim, writer.get(), accumulating, ledger);
+    ++checkpoints_written;
+    checkpoint_wall += secondsSince(started);
   };
   auto last_checkpoint = std::chrono::steady_clock::now();
   const auto checkpointDue = [&] {
@@ -202,6 +207,8 @@ int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
   in.completed = status.completed;
   in.com_height = std::move(com.height);
   in.initial_energy = initial_energy;
+  in.checkpoints = checkpoints_written;
+  in.checkpoint_wall = checkpoint_wall;
   in.energy_balance_error = std::abs(totalEnergy(last.obs) - in.initial_energy -
                                      last.obs.wall_work + last.obs.dissipated_energy);
   const std::string summary = formatRunSummary(in);

@@ -4,7 +4,9 @@
 // independent noise sigma per coordinate in each snapshot gives a displacement of
 // sqrt(2) sigma per coordinate, sqrt(1 + 1/n) times more relative to the mean of n
 // neighbours, and a mean modulus sqrt(pi/2) times that; random steps of length d give
-// <delta> ~ d sqrt(1 + 1/n); psi6 as in HexaticOrderTest.
+// <delta> ~ d sqrt(1 + 1/n); psi6 as in HexaticOrderTest. Bonds (pairs closer than 1.2 d)
+// break beyond 1.5 d: a rigid motion keeps all, bounded rattling keeps all whose distance
+// cannot grow past 1.5 d, random walks of a diameter per cycle break most.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -114,14 +116,60 @@ TEST(StateClassifier, LatticeWithRandomStepsOfOneDiameterIsLiquidLike) {
   }
   const StateResult r = classifyState(cycles, width, d, false);
   EXPECT_EQ(r.state, LayerState::liquid_like);
+  EXPECT_LT(r.bonds_kept, 0.5);
   EXPECT_GT(r.mean_relative_displacement_d, 0.8);
   EXPECT_LT(r.mean_relative_displacement_d, 1.3);
 }
 
-TEST(StateClassifier, SmallCageRattlingStaysBelowTheMobilityThreshold) {
+TEST(StateClassifier, LargeRattlingInsideTheCageIsNotLiquid) {
+  // Every particle sits at a random point within +-0.15 d (per coordinate) of its site in
+  // each cycle, independently: per-cycle mobility about 0.17 d, above the 0.15 d dynamic
+  // Lindemann threshold the classifier used before. But a pair at spacing 1.05 d can never be
+  // farther apart than 1.05 d + 2 * 0.15 sqrt(2) d = 1.47 d < 1.5 d: no bond breaks, the
+  // particles are caged, and psi6 ~ exp(-36 * 0.087^2 / 1.05^2) = 0.78 > 0.7: a crystal.
+  Snapshot lattice = triangular();
+  for (std::size_t j = 0; j < lattice.x.size(); ++j) {
+    lattice.x[j] *= 1.05;
+    lattice.z[j] *= 1.05;
+  }
+  std::mt19937_64 rng(31);
+  std::vector<Snapshot> cycles;
+  for (int c = 0; c < 16; ++c) {
+    Snapshot s = lattice;
+    for (std::size_t j = 0; j < s.x.size(); ++j) {
+      s.x[j] += 0.3 * d * (uniform(rng) - 0.5);
+      s.z[j] += 0.3 * d * (uniform(rng) - 0.5);
+    }
+    cycles.push_back(s);
+  }
+  const StateResult r = classifyState(cycles, 1.05 * width, d, false);
+  EXPECT_GT(r.mean_relative_displacement_d, 0.15);
+  EXPECT_EQ(r.bonds_kept, 1.0);
+  EXPECT_EQ(r.state, LayerState::crystal);
+}
+
+TEST(StateClassifier, BondsKeptCountsPairsThatStayWithinTheFirstShell) {
+  // Three disks in a row at spacing d: bonds (0,1) and (1,2). Moving disk 2 out to 1.6 d
+  // from disk 1 breaks one of the two.
+  Snapshot before, after;
+  before.x = {1 * d, 2 * d, 3 * d};
+  before.z = {d, d, d};
+  after = before;
+  after.x[2] = 3.6 * d;
+  EXPECT_DOUBLE_EQ(granwave::bondsKept(before, after, width, false, 1.2 * d, 1.5 * d), 0.5);
+  EXPECT_DOUBLE_EQ(granwave::bondsKept(before, before, width, false, 1.2 * d, 1.5 * d), 1.0);
+  // Across a periodic boundary the minimum image keeps the bond.
+  Snapshot wrap = before;
+  wrap.x = {0.4 * d, width - 0.5 * d, 10 * d};
+  Snapshot wrapped = wrap;
+  wrapped.x[0] += 0.2 * d;
+  EXPECT_DOUBLE_EQ(granwave::bondsKept(wrap, wrapped, width, true, 1.2 * d, 1.5 * d), 1.0);
+}
+
+TEST(StateClassifier, SmallCageRattlingIsAHotCrystal) {
   // Noise 0.05 d per coordinate in each snapshot: displacement between cycles has
   // 0.05 sqrt(2) d per coordinate, relative to 6 neighbours sqrt(1 + 1/6) times that,
-  // mean modulus sqrt(pi/2) * 0.0764 d = 0.096 d < 0.15 d: still a (hot) crystal.
+  // mean modulus sqrt(pi/2) * 0.0764 d = 0.096 d; no bond stretches by 0.3 d: a crystal.
   const StateResult r = classifyState(rigidlyVibrating(triangular(), 6, 0.05), width, d, false);
   EXPECT_EQ(r.state, LayerState::crystal);
   EXPECT_NEAR(r.mean_relative_displacement_d, 0.096, 0.015);
