@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "particles/EventLoopStall.hpp"
+
 namespace granwave {
 
 EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& init)
@@ -258,7 +260,7 @@ void EdSimulation::advanceTo(double t) {
     ++obs_.events;
     if (now_ == last) {
       if (++stalled > 50'000'000)
-        throw std::runtime_error(fmt::format(
+        throw EventLoopStall(fmt::format(
             "event loop stalled: 5e7 events without time advancing at t = {:.12g} s", now_));
     } else {
       stalled = 0;

@@ -2,7 +2,7 @@
 // HDF5 form of the engine's state and of snapshots, for checkpoints: every field is stored
 // as the exact bits it has in memory (doubles as doubles, counters as integers), so that a
 // restored run continues bit-identically. Layout under `group`: one dataset per field,
-// indexed by particle (or by snapshot); docs/file-formats.md ("checkpoint") lists them.
+// indexed by particle (or by snapshot); docs/commands.md ("Checkpoints") lists them.
 #include <string>
 #include <vector>
 

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 #include <signal.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -28,21 +29,36 @@ RunCheckpoint::RunCheckpoint(std::string run_path, std::string identity)
       state_path_(run_path_ + ".checkpoint"),
       identity_(std::move(identity)) {
   const std::string lock = run_path_ + ".lock";
-  lock_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (lock_ < 0)
-    throw std::runtime_error(lock + ": cannot create the run's lock file (" + std::strerror(errno) +
-                             ")");
-  if (::flock(lock_, LOCK_EX | LOCK_NB) != 0) {
+  // The holder unlinks the lock file when done; a process that opened the file before that
+  // would hold a lock on a name no one else sees, so it checks that the file it locked is
+  // still the one at the path, and tries again if not.
+  for (int attempt = 0; attempt < 100; ++attempt) {
+    lock_ = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock_ < 0)
+      throw CheckpointError(lock + ": cannot create the run's lock file (" + std::strerror(errno) +
+                            ")");
+    if (::flock(lock_, LOCK_EX | LOCK_NB) != 0) {
+      ::close(lock_);
+      lock_ = -1;
+      throw CheckpointError(run_path_ + ": another granwave process is making this run (it holds " +
+                            lock + "); wait for it or stop it");
+    }
+    struct stat held {
+    }, named{};
+    if (::fstat(lock_, &held) == 0 && ::stat(lock.c_str(), &named) == 0 &&
+        held.st_ino == named.st_ino && held.st_dev == named.st_dev)
+      return;
     ::close(lock_);
     lock_ = -1;
-    throw std::runtime_error(run_path_ +
-                             ": another granwave process is making this run (it holds " + lock +
-                             "); wait for it or stop it");
   }
+  throw CheckpointError(lock +
+                        ": the lock file keeps being replaced; is another process "
+                        "making this run?");
 }
 
 RunCheckpoint::~RunCheckpoint() {
   if (lock_ < 0) return;
+  // Unlinked while held, so no other process can have locked the same name meanwhile.
   std::error_code ec;
   std::filesystem::remove(run_path_ + ".lock", ec);  // a SIGKILL leaves it: harmless
   ::close(lock_);
@@ -71,8 +87,8 @@ std::uint64_t RunCheckpoint::save(const EdSimulation& sim, H5mdWriter* writer,
                                   const NamedCheckpointables& observers, CheckpointLedger ledger) {
   ++ledger.checkpoints;
   const std::string copy = writer ? copyPath(ledger.checkpoints) : "";
-  if (writer) writer->checkpoint(copy);
-  {
+  try {
+    if (writer) writer->checkpoint(copy);
     h5::AtomicFile out(state_path_);
     h5::File& f = out.file();
     f.writeStringAttribute("/", "format", kFormat);
@@ -86,6 +102,12 @@ std::uint64_t RunCheckpoint::save(const EdSimulation& sim, H5mdWriter* writer,
     writeEngineState(f, "/engine", sim.state());
     for (const auto& [name, observer] : observers) observer->saveState(f, "/observers/" + name);
     out.commit();
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    if (!copy.empty()) std::filesystem::remove(copy, ec);
+    throw CheckpointError(
+        fmt::format("{}: cannot write checkpoint {} ({}); the previous one is kept", state_path_,
+                    ledger.checkpoints, e.what()));
   }
   // Only now is the new pair complete; the older copies can go.
   removeCopiesExcept(copy);
@@ -96,10 +118,10 @@ LoadedCheckpoint RunCheckpoint::load(const NamedCheckpointables& observers) cons
   try {
     const h5::File f = h5::File::openReadOnly(state_path_);
     if (!f.hasAttribute("/", "format") || f.readStringAttribute("/", "format") != kFormat)
-      throw std::runtime_error(state_path_ + ": not a granwave checkpoint (no format \"" +
-                               std::string(kFormat) + "\")");
+      throw CheckpointError(state_path_ + ": not a granwave checkpoint (no format \"" +
+                            std::string(kFormat) + "\")");
     if (f.readStringAttribute("/", "identity") != identity_)
-      throw std::runtime_error(
+      throw CheckpointError(
           state_path_ +
           ": saved by a run of another scene, options or build of granwave; remove it (and " +
           run_path_ + ".checkpoint-*.h5md) to start the run afresh");
@@ -113,15 +135,18 @@ LoadedCheckpoint RunCheckpoint::load(const NamedCheckpointables& observers) cons
       const std::filesystem::path dir = std::filesystem::path(state_path_).parent_path();
       out.run_copy = (dir / copy).string();
       if (!std::filesystem::exists(out.run_copy))
-        throw std::runtime_error(state_path_ + ": its copy of the run file, " + out.run_copy +
-                                 ", is missing; remove the checkpoint to start afresh");
+        throw CheckpointError(state_path_ + ": its copy of the run file, " + out.run_copy +
+                              ", is missing; remove the checkpoint to start afresh");
     }
     out.engine = readEngineState(f, "/engine");
     for (const auto& [name, observer] : observers) observer->restoreState(f, "/observers/" + name);
     return out;
-  } catch (const h5::H5Error& e) {
-    throw std::runtime_error(std::string(e.what()) +
-                             " (damaged checkpoint; remove it to start the run afresh)");
+  } catch (const CheckpointError&) {
+    throw;
+  } catch (const std::exception& e) {
+    // HDF5 errors name the file; the engine's and observers' consistency checks do not.
+    throw CheckpointError(state_path_ + ": damaged checkpoint (" + e.what() + "); remove it and " +
+                          run_path_ + ".checkpoint-*.h5md to start the run afresh");
   }
 }
 
@@ -129,7 +154,6 @@ void RunCheckpoint::remove() const {
   std::error_code ec;
   std::filesystem::remove(state_path_, ec);
   removeCopiesExcept("");
-  std::filesystem::remove(run_path_ + ".lock", ec);
 }
 
 void removeOrphanedTemporaries(const std::string& path) {

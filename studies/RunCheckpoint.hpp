@@ -9,6 +9,7 @@
 // The copy is written first and the state file last, each atomically, so a kill at any
 // instant leaves a consistent pair: the older one until the new state file is in place.
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -20,6 +21,14 @@ namespace granwave {
 
 class EdSimulation;
 class H5mdWriter;
+
+// A checkpoint that cannot be taken, read or continued (the lock is held, a file is damaged or
+// belongs to another run, the disk is full). Not a result of the run: the command exits with
+// 75 and a study does not cache it, so the run is tried again once the cause is gone.
+class CheckpointError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 // What the run has accumulated besides the engine and the observers.
 struct CheckpointLedger {
@@ -41,7 +50,7 @@ class RunCheckpoint {
   // `identity` says what the run is (canonical scene, options, build); a checkpoint is only
   // continued by a run of the same identity.
   // Takes RUN.h5.lock (flock, released even on SIGKILL): two processes writing the same
-  // run would destroy each other's checkpoints. std::runtime_error if another holds it.
+  // run would destroy each other's checkpoints. CheckpointError if another holds it.
   RunCheckpoint(std::string run_path, std::string identity);
   ~RunCheckpoint();
   RunCheckpoint(const RunCheckpoint&) = delete;
@@ -51,14 +60,15 @@ class RunCheckpoint {
   bool exists() const;
 
   // Saves the engine, the run file (through `writer`, may be null) and the observers as
-  // checkpoint ledger.checkpoints + 1, and returns that number. Throws h5::H5Error if it
-  // cannot; the previous checkpoint then stays valid.
+  // checkpoint ledger.checkpoints + 1, and returns that number. CheckpointError if it
+  // cannot (e.g. the disk is full); the previous checkpoint then stays valid.
   std::uint64_t save(const EdSimulation& sim, H5mdWriter* writer,
                      const NamedCheckpointables& observers, CheckpointLedger ledger);
-  // Restores the observers and returns the rest. std::runtime_error naming the file if it is
+  // Restores the observers and returns the rest. CheckpointError naming the file if it is
   // damaged or belongs to another scene, options or build.
   LoadedCheckpoint load(const NamedCheckpointables& observers) const;
-  // After the run has finished: removes the state file and every copy.
+  // After the run has finished: removes the state file and every copy. (The lock file goes
+  // when this object does.)
   void remove() const;
 
  private:

@@ -13,6 +13,7 @@
 
 #include "scene/SceneParser.hpp"
 #include "studies/ChildProcess.hpp"
+#include "studies/ExitCode.hpp"
 #include "studies/InterruptFlag.hpp"
 #include "studies/RemoteWorkers.hpp"
 #include "studies/RunCheckpoint.hpp"
@@ -101,7 +102,8 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
     RunRecord& r = records[i];
     writeScene(r);
     std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
-    if (r.request.kind == RunKind::Particles) earlier_cost[i] = checkpointedCost(r.runPath());
+    if (r.request.kind == RunKind::Particles && opt.checkpoint_every > 0)
+      earlier_cost[i] = checkpointedCost(r.runPath());
   };
   // One finished run (local or remote): record it, unless it was interrupted.
   std::size_t done = 0;
@@ -111,16 +113,19 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
       out.wall += earlier->second.first;
       out.cpu += earlier->second.second;
     }
-    // Only the outcomes the same scene and build would repeat are results and cached: success
-    // (0), a deterministic error (1: e.g. no steady cycles; 2: scene), collapse (3), solver
-    // failure (4). Anything else (interrupted, killed, could not start) is not cached.
-    if (out.exit_code < 0 || out.exit_code > 4) {
+    // Only the outcomes the same scene and build would repeat are results and cached
+    // (studies/ExitCode.hpp). Anything else (interrupted, killed, a file or checkpoint that
+    // could not be written or used, could not start) is tried again next time.
+    if (!isRunOutcome(out.exit_code)) {
       r.ok = false;
       r.exit_code = out.exit_code;
-      r.message =
-          out.exit_code == 130 || out.exit_code == 128 + SIGINT || out.exit_code == 128 + SIGTERM
-              ? "interrupted (not cached)"
-              : fmt::format("did not finish: exit code {} (not cached)", out.exit_code);
+      if (out.exit_code == kExitInterrupted || out.exit_code == 128 + SIGINT ||
+          out.exit_code == 128 + SIGTERM)
+        r.message = "interrupted (not cached)";
+      else if (out.exit_code == kExitFileError || out.exit_code == kExitCheckpointError)
+        r.message = failureReason(r.logPath()) + " (not cached)";
+      else
+        r.message = fmt::format("did not finish: exit code {} (not cached)", out.exit_code);
       return;
     }
     r.ok = out.exit_code == 0;

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <ctime>
@@ -15,6 +16,7 @@
 #include "particles/H5mdWriter.hpp"
 #include "particles/InitialState.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/ExitCode.hpp"
 #include "studies/FieldsSetup.hpp"
 #include "studies/InterruptFlag.hpp"
 #include "studies/ProgressReporter.hpp"
@@ -55,6 +57,234 @@ double totalEnergy(const Observables& o) {
   return o.kinetic_energy + o.rotational_energy + o.potential_energy;
 }
 
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// One `granwave simulate`: the engine, its observers and, with --checkpoint-every, the
+// checkpoints that let the same command continue a killed run.
+class SimulationRun {
+ public:
+  explicit SimulationRun(const SimulateOptions& opt)
+      : opt_(opt),
+        scene_(parseSceneFile(opt.scene_path, opt.overrides)),
+        config_(engineConfig(scene_)),
+        out_(opt.output.empty() ? std::filesystem::path(opt.scene_path).stem().string() + ".h5"
+                                : opt.output),
+        progress_(scene_.run.duration) {
+    if (!opt.fields.empty()) {
+      averager_ = std::make_unique<PhaseAverager>(
+          phaseAveragerConfig(scene_, opt.fields_period, opt.fields_blocks, -1));
+      patterns_ =
+          std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
+      accumulating_.emplace_back("phase_averager", averager_.get());
+      accumulating_.emplace_back("patterns", patterns_.get());
+    }
+  }
+
+  // Opens (or continues from the checkpoint) the engine and the run file.
+  void start(const std::string& command_line) {
+    if (opt_.checkpoint_every > 0) {
+      checkpoint_ = std::make_unique<RunCheckpoint>(out_, runIdentity(scene_, opt_));
+      removeOrphanedTemporaries(out_);
+      if (!opt_.fields.empty()) removeOrphanedTemporaries(opt_.fields);
+      if (checkpoint_->exists()) {
+        loaded_ = checkpoint_->load(accumulating_);
+        resumed_ = true;
+      }
+    } else if (std::filesystem::exists(out_ + ".checkpoint")) {
+      fmt::print(stderr,
+                 "granwave: warning: {}.checkpoint is not used without --checkpoint-every; "
+                 "this run starts afresh\n",
+                 out_);
+    }
+    const BoxInfo box{scene_.container.width, scene_.container.height, scene_.particles.diameter,
+                      scene_.container.periodic_x, scene_.container.periodic_z};
+    if (resumed_) {
+      continueFromCheckpoint(box);
+    } else {
+      sim_ = std::make_unique<EdSimulation>(config_, initialCondition(scene_, config_));
+      if (!opt_.no_output)
+        writer_ = std::make_unique<H5mdWriter>(
+            out_, sceneToToml(scene_), RunProvenance{kVersion, command_line, scene_.run.seed, ""},
+            box, scene_.run.trajectory_stride);
+    }
+    if (writer_) sim_->addObserver(writer_.get());
+    sim_->addObserver(&com_);
+    if (averager_) {
+      sim_->addObserver(averager_.get());
+      sim_->addObserver(patterns_.get());
+    }
+    if (!opt_.quiet) sim_->addObserver(&progress_);
+    initial_energy_ = resumed_ ? loaded_.ledger.initial_energy : totalEnergy(sim_->snapshot().obs);
+  }
+
+  // Runs to the end or to an interrupt, saving checkpoints on the way.
+  RunStatus run() {
+    const auto& interrupt = installInterruptFlag();
+    t0_ = std::chrono::steady_clock::now();
+    cpu0_ = processCpuSeconds();
+    auto last_checkpoint = t0_;
+    // A save costs about a copy of the run file (docs/performance.md); the interval grows so
+    // that saving never takes more than 1/20 of the wall time however large the file gets.
+    double last_save = 0;
+    const auto due = [&] {
+      return checkpoint_ &&
+             secondsSince(last_checkpoint) >= std::max(opt_.checkpoint_every, 20 * last_save);
+    };
+    RunStatus status;
+    while (true) {
+      try {
+        status = sim_->run(&interrupt, due);
+      } catch (const std::exception& e) {
+        // The engine's breakdowns (collapse, stall) repeat from any checkpoint: they are the
+        // run's result, and a checkpoint would only make the next attempt fail again later.
+        // A file that could not be written is not: its checkpoint stays for the next try.
+        if (checkpoint_ && !isOutsideFailure(e)) checkpoint_->remove();
+        throw;
+      }
+      if (!status.paused) break;
+      const auto started = std::chrono::steady_clock::now();
+      saveCheckpoint();
+      last_save = secondsSince(started);
+      last_checkpoint = std::chrono::steady_clock::now();
+    }
+    // Nothing is lost on Ctrl-C: the same command continues from here.
+    if (status.interrupted && checkpoint_) saveCheckpoint();
+    return status;
+  }
+
+  // Writes the outputs and the summary; returns the exit code. The checkpoint goes once the
+  // outputs are written, or when their analysis fails in a way that would only repeat.
+  int finish(const RunStatus& status) {
+    if (!checkpoint_ || !status.completed) return writeOutputs(status);
+    int code = 0;
+    try {
+      code = writeOutputs(status);
+    } catch (const std::exception& e) {
+      if (!isOutsideFailure(e)) removeCheckpoint();
+      throw;
+    }
+    removeCheckpoint();
+    return code;
+  }
+
+ private:
+  void continueFromCheckpoint(const BoxInfo& box) {
+    const std::string remedy = fmt::format("; remove {} and {}.checkpoint-*.h5md to start afresh",
+                                           checkpoint_->statePath(), out_);
+    try {
+      sim_ = std::make_unique<EdSimulation>(config_, loaded_.engine);
+    } catch (const std::exception& e) {
+      throw CheckpointError(fmt::format("{}: its engine state cannot be continued ({}){}",
+                                        checkpoint_->statePath(), e.what(), remedy));
+    }
+    if (!opt_.no_output) {
+      try {
+        writer_ =
+            std::make_unique<H5mdWriter>(out_, loaded_.run_copy, box, scene_.run.trajectory_stride);
+      } catch (const std::exception& e) {
+        throw CheckpointError(
+            fmt::format("{}: the run file saved with checkpoint {} cannot be "
+                        "continued ({}){}",
+                        loaded_.run_copy, loaded_.ledger.checkpoints, e.what(), remedy));
+      }
+    }
+    fmt::print(stderr, "granwave: continuing from {} at t = {:.4f} s (checkpoint {})\n",
+               checkpoint_->statePath(), sim_->now(), loaded_.ledger.checkpoints);
+  }
+
+  void saveCheckpoint() {
+    const auto started = std::chrono::steady_clock::now();
+    CheckpointLedger ledger = loaded_.ledger;
+    ledger.initial_energy = initial_energy_;
+    ledger.wall_seconds += secondsSince(t0_);
+    ledger.cpu_seconds += processCpuSeconds() - cpu0_;
+    loaded_.ledger.checkpoints = checkpoint_->save(*sim_, writer_.get(), accumulating_, ledger);
+    ++checkpoints_written_;
+    checkpoint_wall_ += secondsSince(started);
+  }
+
+  // Also the partial run file of an earlier Ctrl-C, which the finished run supersedes.
+  void removeCheckpoint() {
+    checkpoint_->remove();
+    std::error_code ec;
+    std::filesystem::remove(out_ + ".interrupted", ec);
+  }
+
+  int writeOutputs(const RunStatus& status) {
+    progress_.finish();
+    const Snapshot last = sim_->snapshot();
+    RunSummaryInput in;
+    in.scene = &scene_;
+    in.scene_name = opt_.scene_path;
+    in.final_obs = last.obs;
+    in.simulated = status.time;
+    in.wall = loaded_.ledger.wall_seconds + secondsSince(t0_);
+    in.tc = config_.tc;
+    in.completed = status.completed;
+    in.com_height = std::move(com_.height);
+    in.initial_energy = initial_energy_;
+    in.checkpoints = checkpoints_written_;
+    in.checkpoint_wall = checkpoint_wall_;
+    in.energy_balance_error = std::abs(totalEnergy(last.obs) - in.initial_energy -
+                                       last.obs.wall_work + last.obs.dissipated_energy);
+    if (writer_) {
+      const std::string stored = formatRunSummary(in, false);
+      if (status.completed) {
+        writer_->finish(true, stored);
+      } else {
+        writer_->finish(false, stored, out_ + ".interrupted");
+      }
+    }
+    fmt::print("{}", formatRunSummary(in));
+    if (!status.completed) {
+      fmt::print(
+          stderr, "granwave: interrupted at t = {:.4f} s; partial run saved as {}{}\n", status.time,
+          opt_.no_output ? std::string("(nothing: --no-output)") : out_ + ".interrupted",
+          checkpoint_ ? "; the same command continues from " + checkpoint_->statePath() : "");
+      return kExitInterrupted;
+    }
+    if (writer_) fmt::print("output          {}\n", out_);
+    if (averager_) {
+      PeriodResult period;
+      int discarded = 0;
+      const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
+      FieldsAnalysis a = analyseFields(
+          *averager_,
+          fieldsContext(scene_, "live: " + opt_.scene_path, sceneToToml(scene_), layer_period));
+      a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.particles.diameter,
+                                    scene_.container.periodic_x);
+      writeFieldsFile(opt_.fields, a);
+      fmt::print("{}", formatFieldsSummary(a));
+      fmt::print("fields output   {} (+ {})\n", opt_.fields, xdmfSidecarPath(opt_.fields));
+    }
+    return kExitSuccess;
+  }
+
+  const SimulateOptions& opt_;
+  const Scene scene_;
+  const EngineConfig config_;
+  const std::string out_;
+  // Observers that accumulate over the run; a checkpoint saves them by these names.
+  CenterOfMassSeries com_;
+  std::unique_ptr<PhaseAverager> averager_;
+  std::unique_ptr<PatternSampler> patterns_;
+  NamedCheckpointables accumulating_{{"center_of_mass", &com_}};
+  ProgressReporter progress_;
+
+  std::unique_ptr<RunCheckpoint> checkpoint_;
+  LoadedCheckpoint loaded_;
+  bool resumed_ = false;
+  std::unique_ptr<EdSimulation> sim_;
+  std::unique_ptr<H5mdWriter> writer_;
+  double initial_energy_ = 0;
+  std::chrono::steady_clock::time_point t0_;
+  double cpu0_ = 0;
+  int checkpoints_written_ = 0;
+  double checkpoint_wall_ = 0;
+};
+
 }  // namespace
 
 void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
@@ -81,168 +311,9 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
 }
 
 int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
-  const Scene scene = parseSceneFile(opt.scene_path, opt.overrides);
-  const EngineConfig config = engineConfig(scene);
-  std::string out = opt.output;
-  if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".h5";
-
-  // Observers that accumulate over the run; a checkpoint saves them by these names.
-  CenterOfMassSeries com;
-  std::unique_ptr<PhaseAverager> averager;
-  std::unique_ptr<PatternSampler> patterns;
-  NamedCheckpointables accumulating{{"center_of_mass", &com}};
-  if (!opt.fields.empty()) {
-    averager = std::make_unique<PhaseAverager>(
-        phaseAveragerConfig(scene, opt.fields_period, opt.fields_blocks, -1));
-    patterns = std::make_unique<PatternSampler>(PatternSamplerConfig{scene.run.phases_per_cycle});
-    accumulating.emplace_back("phase_averager", averager.get());
-    accumulating.emplace_back("patterns", patterns.get());
-  }
-
-  std::unique_ptr<RunCheckpoint> checkpoint;
-  LoadedCheckpoint loaded;
-  bool resumed = false;
-  if (opt.checkpoint_every > 0) {
-    checkpoint = std::make_unique<RunCheckpoint>(out, runIdentity(scene, opt));
-    removeOrphanedTemporaries(out);
-    if (!opt.fields.empty()) removeOrphanedTemporaries(opt.fields);
-    if (checkpoint->exists()) {
-      loaded = checkpoint->load(accumulating);
-      resumed = true;
-    }
-  }
-  std::unique_ptr<EdSimulation> simulation =
-      resumed ? std::make_unique<EdSimulation>(config, loaded.engine)
-              : std::make_unique<EdSimulation>(config, initialCondition(scene, config));
-  EdSimulation& sim = *simulation;
-  if (resumed)
-    fmt::print(stderr, "granwave: continuing from {} at t = {:.4f} s (checkpoint {})\n",
-               checkpoint->statePath(), sim.now(), loaded.ledger.checkpoints);
-
-  std::unique_ptr<H5mdWriter> writer;
-  if (!opt.no_output) {
-    BoxInfo box{scene.container.width, scene.container.height, scene.particles.diameter,
-                scene.container.periodic_x, scene.container.periodic_z};
-    if (resumed) {
-      writer = std::make_unique<H5mdWriter>(out, loaded.run_copy, box, scene.run.trajectory_stride);
-    } else {
-      RunProvenance prov{kVersion, command_line, scene.run.seed, ""};
-      writer = std::make_unique<H5mdWriter>(out, sceneToToml(scene), prov, box,
-                                            scene.run.trajectory_stride);
-    }
-    sim.addObserver(writer.get());
-  }
-  sim.addObserver(&com);
-  if (averager) {
-    sim.addObserver(averager.get());
-    sim.addObserver(patterns.get());
-  }
-  ProgressReporter progress(scene.run.duration);
-  if (!opt.quiet) sim.addObserver(&progress);
-
-  const double initial_energy =
-      resumed ? loaded.ledger.initial_energy : totalEnergy(sim.snapshot().obs);
-  const auto& interrupt = installInterruptFlag();
-  const auto t0 = std::chrono::steady_clock::now();
-  const double cpu0 = processCpuSeconds();
-  auto secondsSince = [](std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-  };
-  int checkpoints_written = 0;
-  double checkpoint_wall = 0;
-  auto saveCheckpoint = [&] {
-    const auto started = std::chrono::steady_clock::now();
-    CheckpointLedger ledger = loaded.ledger;
-    ledger.initial_energy = initial_energy;
-    ledger.wall_seconds += secondsSince(t0);
-    ledger.cpu_seconds += processCpuSeconds() - cpu0;
-    loaded.ledger.checkpoints = checkpoint->save(sim, writer.get(), accumulating, ledger);
-    ++checkpoints_written;
-    checkpoint_wall += secondsSince(started);
-  };
-  auto last_checkpoint = std::chrono::steady_clock::now();
-  const auto checkpointDue = [&] {
-    return checkpoint && secondsSince(last_checkpoint) >= opt.checkpoint_every;
-  };
-  RunStatus status;
-  while (true) {
-    try {
-      status = sim.run(&interrupt, checkpointDue);
-    } catch (...) {
-      // The engine's failures (collapse, stall) repeat from any checkpoint: they are the
-      // run's result, and a checkpoint would only make the next attempt fail again later.
-      if (checkpoint) checkpoint->remove();
-      throw;
-    }
-    if (!status.paused) break;
-    saveCheckpoint();
-    last_checkpoint = std::chrono::steady_clock::now();
-  }
-  // Nothing is lost on Ctrl-C: the same command continues from here.
-  if (status.interrupted && checkpoint) saveCheckpoint();
-  // A finished simulation needs no checkpoint once the function returns, whether its
-  // outputs are written or their analysis fails (that failure would only repeat). A kill
-  // before then continues from the last checkpoint.
-  struct RemoveWhenFinished {
-    RunCheckpoint* checkpoint;
-    std::string partial;  // RUN.h5.interrupted of an earlier Ctrl-C, superseded
-    ~RemoveWhenFinished() {
-      if (!checkpoint) return;
-      checkpoint->remove();
-      std::error_code ec;
-      std::filesystem::remove(partial, ec);
-    }
-  } remove_when_finished{status.completed ? checkpoint.get() : nullptr, out + ".interrupted"};
-  const double wall = loaded.ledger.wall_seconds + secondsSince(t0);
-  progress.finish();
-
-  const Snapshot last = sim.snapshot();
-  RunSummaryInput in;
-  in.scene = &scene;
-  in.scene_name = opt.scene_path;
-  in.final_obs = last.obs;
-  in.simulated = status.time;
-  in.wall = wall;
-  in.tc = config.tc;
-  in.completed = status.completed;
-  in.com_height = std::move(com.height);
-  in.initial_energy = initial_energy;
-  in.checkpoints = checkpoints_written;
-  in.checkpoint_wall = checkpoint_wall;
-  in.energy_balance_error = std::abs(totalEnergy(last.obs) - in.initial_energy -
-                                     last.obs.wall_work + last.obs.dissipated_energy);
-  const std::string summary = formatRunSummary(in);
-
-  if (writer) {
-    const std::string stored = formatRunSummary(in, false);
-    if (status.completed) {
-      writer->finish(true, stored);
-    } else {
-      writer->finish(false, stored, out + ".interrupted");
-    }
-  }
-  fmt::print("{}", summary);
-  if (!status.completed) {
-    fmt::print(stderr, "granwave: interrupted at t = {:.4f} s; partial run saved as {}{}\n",
-               status.time,
-               opt.no_output ? std::string("(nothing: --no-output)") : out + ".interrupted",
-               checkpoint ? "; the same command continues from " + checkpoint->statePath() : "");
-    return 130;
-  }
-  if (writer) fmt::print("output          {}\n", out);
-  if (averager) {
-    PeriodResult period;
-    int discarded = 0;
-    const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
-    FieldsAnalysis a = analyseFields(*averager, fieldsContext(scene, "live: " + opt.scene_path,
-                                                              sceneToToml(scene), layer_period));
-    a.patterns = classifyPatterns(*patterns, scene.container.width, scene.particles.diameter,
-                                  scene.container.periodic_x);
-    writeFieldsFile(opt.fields, a);
-    fmt::print("{}", formatFieldsSummary(a));
-    fmt::print("fields output   {} (+ {})\n", opt.fields, xdmfSidecarPath(opt.fields));
-  }
-  return 0;
+  SimulationRun run(opt);
+  run.start(command_line);
+  return run.finish(run.run());
 }
 
 }  // namespace granwave

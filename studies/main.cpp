@@ -6,13 +6,15 @@
 #include <exception>
 #include <string>
 
-#include "h5/H5Error.hpp"
 #include "hydro/CvodeIntegrator.hpp"
+#include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/ExitCode.hpp"
 #include "studies/FieldsCommand.hpp"
 #include "studies/HydroCommand.hpp"
 #include "studies/RemoteWorkers.hpp"
+#include "studies/RunCheckpoint.hpp"
 #include "studies/RunScheduler.hpp"
 #include "studies/SimulateCommand.hpp"
 #include "studies/StudyCommand.hpp"
@@ -50,22 +52,28 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
   } catch (const granwave::StudyInterrupted& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return stop(130);
+    return stop(granwave::kExitInterrupted);
   } catch (const granwave::StudyError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return stop(2);
+    return stop(granwave::kExitInvalidInput);
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return 2;
+    return granwave::kExitInvalidInput;
   } catch (const granwave::hydro::CvodeError& e) {
     fmt::print(stderr, "granwave: hydrodynamic solver: {}\n", e.what());
-    return 4;
+    return granwave::kExitSolverFailure;
   } catch (const granwave::InelasticCollapse& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return 3;
+    return granwave::kExitEngineBreakdown;
+  } catch (const granwave::EventLoopStall& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return granwave::kExitEngineBreakdown;
+  } catch (const granwave::CheckpointError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return stop(granwave::kExitCheckpointError);
   } catch (const std::exception& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
-    return stop(1);
+    return stop(granwave::isOutsideFailure(e) ? granwave::kExitFileError : granwave::kExitError);
   }
   return 0;
 }

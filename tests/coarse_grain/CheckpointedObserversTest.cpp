@@ -118,8 +118,18 @@ TEST(CheckpointedObservers, RestoredPatternSamplerKeepsTheSameCycles) {
   for (std::size_t c = 0; c < a.size(); ++c) {
     ASSERT_EQ(a[c].size(), b[c].size());
     for (std::size_t k = 0; k < a[c].size(); ++k) {
-      EXPECT_EQ(a[c][k].step, b[c][k].step);
-      EXPECT_EQ(0, std::memcmp(a[c][k].z.data(), b[c][k].z.data(), kParticles * sizeof(double)));
+      const Snapshot &p = a[c][k], &q = b[c][k];
+      EXPECT_EQ(p.step, q.step);
+      EXPECT_TRUE(sameBits(p.time, q.time));
+      EXPECT_TRUE(sameBits(p.plate_height, q.plate_height));
+      EXPECT_TRUE(sameBits(p.obs.center_of_mass_height, q.obs.center_of_mass_height));
+      for (const auto member :
+           {&Snapshot::x, &Snapshot::z, &Snapshot::vx, &Snapshot::vz, &Snapshot::omega}) {
+        ASSERT_EQ((p.*member).size(), static_cast<std::size_t>(kParticles));
+        ASSERT_EQ((q.*member).size(), static_cast<std::size_t>(kParticles));
+        EXPECT_EQ(0,
+                  std::memcmp((p.*member).data(), (q.*member).data(), kParticles * sizeof(double)));
+      }
     }
   }
 }

@@ -5,6 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include "EngineTestSupport.hpp"
@@ -94,10 +95,21 @@ Scene periodicGas() {
 TEST(EngineState, RestartFromStateContinuesBitIdenticalForWetPaperLayer) {
   const Scene s = wetPaperLayer();
   const auto whole = uninterrupted(s);
-  // Records 17 (mid-flight) and 23 (the layer on the plate, particles riding it).
-  for (int pause_after : {17, 23}) {
+  // Records 17 (the layer in flight) and 49 (the layer on the plate, 15 particles riding it):
+  // the riding particles' offsets and motion flags must survive the restart too.
+  for (const auto& [pause_after, riders] : {std::pair{17, false}, std::pair{49, true}}) {
     SCOPED_TRACE("pause after record " + std::to_string(pause_after));
-    expectSameRecords(whole, restarted(s, pause_after, [](EngineState st) { return st; }));
+    long riding = -1;
+    expectSameRecords(whole, restarted(s, pause_after, [&riding](EngineState st) {
+                        riding = std::count_if(
+                            st.particles.begin(), st.particles.end(),
+                            [](const ParticleState& p) { return p.motion != Motion::Ballistic; });
+                        return st;
+                      }));
+    if (riders)
+      EXPECT_GT(riding, 0);
+    else
+      EXPECT_EQ(riding, 0);
   }
 }
 

@@ -66,6 +66,12 @@ class SimulateCli : public ::testing::Test {
 };
 
 const char* kShort = "[run]\nduration = 0.3\n";
+// A cold, dense, undriven gas with the TC model off: inelastic collapse within about 1 s.
+const char* kCollapse =
+    "[particles]\ncount = 400\n[container]\nwidth = 0.0627\nheight = 0.0627\n"
+    "periodic_x = true\nperiodic_z = true\n[drive]\nfrequency = 0\n[contact]\n"
+    "restitution = \"constant\"\ne = 0.3\nfriction = 0\ntc = \"off\"\n[initial]\n"
+    "temperature = 1e-6\n[run]\ngravity = 0\nduration = 100\n";
 
 }  // namespace
 
@@ -139,12 +145,7 @@ TEST_F(SimulateCli, MissingSceneFileIsAnError) {
 }
 
 TEST_F(SimulateCli, CollapseWithoutTCIsReportedAndWritesNothing) {
-  const std::string scene = write("collapse.toml",
-                                  "[particles]\ncount = 400\n[container]\nwidth = 0.0627\n"
-                                  "height = 0.0627\nperiodic_x = true\nperiodic_z = true\n"
-                                  "[drive]\nfrequency = 0\n[contact]\nrestitution = \"constant\"\n"
-                                  "e = 0.3\nfriction = 0\ntc = \"off\"\n[initial]\n"
-                                  "temperature = 1e-6\n[run]\ngravity = 0\nduration = 100\n");
+  const std::string scene = write("collapse.toml", kCollapse);
   const Result r = run("simulate -q " + scene + " -o run.h5");
   EXPECT_EQ(r.code, 3) << r.err;
   EXPECT_NE(r.err.find("inelastic collapse"), std::string::npos) << r.err;
@@ -162,4 +163,46 @@ TEST_F(SimulateCli, InterruptSavesPartialRunUnderInterruptedName) {
   EXPECT_FALSE(reader.completed());
   EXPECT_GT(reader.frameCount(), 1u);
   EXPECT_EQ(stray("run.h5.interrupted"), 0);
+}
+
+// Exit codes of checkpointed runs (studies/ExitCode.hpp): a failure outside the run is 75 and
+// keeps what is there; the engine's own breakdown is the run's result and clears it.
+TEST_F(SimulateCli, CheckpointLockHeldByAnotherProcessExits75AndWritesNothing) {
+  const std::string scene = write("short.toml", kShort);
+  const Result r =
+      run("simulate -q " + scene + " -o run.h5 --checkpoint-every 1", "flock run.h5.lock");
+  EXPECT_EQ(r.code, 75) << r.err;
+  EXPECT_NE(r.err.find("another granwave process"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "run.h5"));
+}
+
+TEST_F(SimulateCli, CheckpointThatCannotBeWrittenExits75) {
+  const std::string scene = write("run.toml", "[run]\nduration = 3\n");
+  fs::create_directories(dir_ / "run.h5.checkpoint-1.h5md" / "in-the-way");
+  const Result r = run("simulate -q " + scene + " -o run.h5 --checkpoint-every 0.05");
+  EXPECT_EQ(r.code, 75) << r.err;
+  EXPECT_NE(r.err.find("cannot write checkpoint 1"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "run.h5"));
+  EXPECT_FALSE(fs::exists(dir_ / "run.h5.checkpoint"));
+  EXPECT_TRUE(fs::exists(dir_ / "run.h5.checkpoint-1.h5md" / "in-the-way"));
+}
+
+TEST_F(SimulateCli, CollapseClearsTheCheckpointItWouldOnlyRepeat) {
+  const std::string scene = write("collapse.toml", kCollapse);
+  const Result r = run("simulate -q " + scene + " -o run.h5 --checkpoint-every 1e-3");
+  EXPECT_EQ(r.code, 3) << r.err;
+  EXPECT_EQ(stray(), 0);
+}
+
+TEST_F(SimulateCli, CheckpointIsNotUsedWithoutTheOptionAndSaysSo) {
+  const std::string scene = write("short.toml", kShort);
+  write("run.h5.checkpoint", "left by an earlier run\n");
+  const Result r = run("simulate -q " + scene + " -o run.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: run.h5.checkpoint is not used without --checkpoint-every"),
+            std::string::npos)
+      << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "run.h5"));
 }

@@ -3,7 +3,8 @@
 # last checkpoint and ends bit-identical to the same command never stopped: the run file
 # (trajectories, observables, scene, provenance) and the fields file. Checkpointing itself
 # changes nothing but the command line recorded in the provenance. Also: a checkpoint of
-# another scene is refused by name, a damaged one too, and nothing is left behind.
+# another scene is refused by name, a damaged one too (exit 75, kept), and nothing is left
+# behind.
 # Usage: checkpoint_resume.sh GRANWAVE SCENE.toml WORKDIR
 set -eu
 granwave=$1
@@ -37,10 +38,12 @@ kill -9 "$pid"
 wait "$pid" 2>/dev/null || true
 [ ! -e run.h5 ] || fail "the run finished before it was killed; nothing was tested"
 
-# A checkpoint is continued only by the run it belongs to.
-if run --checkpoint-every 0.2 --set drive.gamma=3.5 > /dev/null 2> other.log; then
-  fail "a checkpoint of another scene was continued"
-fi
+# A checkpoint is continued only by the run it belongs to; refusing it is not the run's result
+# (exit 75: a study tries the run again) and leaves the checkpoint alone.
+code=0
+run --checkpoint-every 0.2 --set drive.gamma=3.5 > /dev/null 2> other.log || code=$?
+[ "$code" -eq 75 ] || fail "a checkpoint of another scene: exit $code, not 75"
+[ -e run.h5.checkpoint ] || fail "refusing a foreign checkpoint removed it"
 grep -q "run.h5.checkpoint: saved by a run of another scene" other.log ||
   fail "unclear error for a foreign checkpoint: $(cat other.log)"
 
@@ -59,7 +62,10 @@ leftovers=$(ls | grep -e checkpoint -e '\.tmp-' -e '\.lock' || true)
 # A damaged checkpoint: one line naming it, no output.
 echo "not HDF5" > run.h5.checkpoint
 rm -f run.h5 run.fields.h5
-if run --checkpoint-every 0.2 > /dev/null 2> damaged.log; then fail "a damaged checkpoint was used"; fi
+code=0
+run --checkpoint-every 0.2 > /dev/null 2> damaged.log || code=$?
+[ "$code" -eq 75 ] || fail "a damaged checkpoint: exit $code, not 75"
+[ -e run.h5.checkpoint ] || fail "a damaged checkpoint was removed"
 grep -q "run.h5.checkpoint" damaged.log || fail "the error does not name the checkpoint: $(cat damaged.log)"
 [ "$(wc -l < damaged.log)" -eq 1 ] || fail "more than one error line: $(cat damaged.log)"
 [ ! -e run.h5 ] || fail "a damaged checkpoint left a run file"

@@ -15,10 +15,10 @@ mkdir -p "$work"
 
 "$granwave" study "$study" -o "$work/killed" -q -j 2 --no-report --checkpoint-every 0.2 &
 pid=$!
-# Kill once some but not all runs are recorded and a particle run is being made.
+# Kill once some but not all runs are recorded and a particle run has saved a checkpoint.
 i=0
 while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ] ||
-  ! ls "$work/killed/runs" | grep -q '^particles-.*\.h5\.tmp-'; do
+  ! ls "$work/killed/runs" | grep -q '^particles-.*\.h5\.checkpoint$'; do
   sleep 0.05
   i=$((i + 1))
   [ "$i" -lt 1200 ] || { echo "sweep_resume: no run finished within 60 s" >&2; exit 1; }
