@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "h5/AtomicFile.hpp"
@@ -22,7 +23,21 @@ namespace granwave {
 
 namespace {
 constexpr const char* kFormat = "granwave-checkpoint-1";
+
+// A process that can still write: it exists and is not a zombie. A run killed with its
+// study is re-parented, and where PID 1 does not reap (containers) it stays a zombie, which
+// kill(pid, 0) still reports as alive; its state letter in /proc/PID/stat (proc(5)) tells.
+bool processIsRunning(pid_t pid) {
+  if (::kill(pid, 0) != 0 && errno == ESRCH) return false;
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(stat, line)) return true;  // no procfs: trust kill()
+  const std::size_t close = line.rfind(')');   // the command name may hold spaces and ')'
+  if (close == std::string::npos || close + 2 >= line.size()) return true;
+  const char state = line[close + 2];
+  return state != 'Z' && state != 'X';
 }
+}  // namespace
 
 RunCheckpoint::RunCheckpoint(std::string run_path, std::string identity)
     : run_path_(std::move(run_path)),
@@ -168,7 +183,7 @@ void removeOrphanedTemporaries(const std::string& path) {
     const std::string digits = name.substr(mark + 5);
     if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
     const pid_t pid = static_cast<pid_t>(std::stol(digits));
-    if (pid == ::getpid() || ::kill(pid, 0) == 0 || errno != ESRCH) continue;
+    if (pid == ::getpid() || processIsRunning(pid)) continue;
     std::filesystem::remove(entry.path(), ec);
   }
 }

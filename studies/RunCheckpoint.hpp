@@ -78,8 +78,9 @@ class RunCheckpoint {
   int lock_ = -1;
 };
 
-// Removes the temporaries "<path>...tmp-<pid>" that processes no longer alive left beside
-// `path` (a SIGKILLed run cannot delete its own), so a cache does not fill with them.
+// Removes the temporaries "<path>...tmp-<pid>" that processes no longer running (gone, or
+// zombies) left beside `path` (a killed run cannot delete its own), so a cache does not fill
+// with them.
 void removeOrphanedTemporaries(const std::string& path);
 
 // The cost (wall, cpu seconds) a checkpointed run had spent before its last checkpoint;

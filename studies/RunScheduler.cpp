@@ -102,6 +102,7 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
     RunRecord& r = records[i];
     writeScene(r);
     std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
+    removeOrphanedTemporaries(r.stem);  // of any kind of run killed in an earlier study
     if (r.request.kind == RunKind::Particles && opt.checkpoint_every > 0)
       earlier_cost[i] = checkpointedCost(r.runPath());
   };

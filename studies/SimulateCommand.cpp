@@ -311,6 +311,9 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
 }
 
 int runSimulate(const SimulateOptions& opt, const std::string& command_line) {
+  // From the start, not only once the engine runs: a SIGTERM while the run file is being
+  // created (a study killed just after launching this run) would otherwise leave it behind.
+  installInterruptFlag();
   SimulationRun run(opt);
   run.start(command_line);
   return run.finish(run.run());
