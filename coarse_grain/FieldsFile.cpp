@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "h5/AtomicFile.hpp"
 
@@ -65,7 +67,11 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name, const F
   {
     std::ofstream out(tmp, std::ios::trunc);
     out << s;
-    if (!out) throw std::runtime_error(xdmf_path + ": cannot write the XDMF sidecar");
+    out.flush();
+    // A system_error (errno: disk full, permissions) marks this as a file failure, exit 74.
+    if (!out)
+      throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                              xdmf_path + ": cannot write the XDMF sidecar");
   }
   std::filesystem::rename(tmp, xdmf_path);
 }

@@ -36,7 +36,14 @@ int main(int argc, char** argv) {
   granwave::addHydroCommand(app, hydro);
   granwave::StudyOptions study;
   granwave::addStudyCommand(app, study);
-  CLI11_PARSE(app, argc, argv);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line and the documented code for a bad command line (CLI11's own codes are 100+).
+    fmt::print(stderr, "granwave: {} (see granwave --help)\n", e.what());
+    return granwave::kExitInvalidInput;
+  }
 
   // Under mpirun an error on one rank ends them all (the others may wait for it).
   auto stop = [&mpi](int code) {

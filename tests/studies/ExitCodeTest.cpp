@@ -29,6 +29,9 @@ TEST(ExitCode, FileAndCheckpointErrorsComeFromOutsideTheRun) {
   EXPECT_TRUE(isOutsideFailure(h5::H5Error("run.h5: write failed")));
   EXPECT_TRUE(isOutsideFailure(std::filesystem::filesystem_error(
       "rename", std::make_error_code(std::errc::no_space_on_device))));
+  EXPECT_TRUE(isOutsideFailure(std::system_error(std::make_error_code(std::errc::io_error),
+                                                 "f.xdmf: cannot write the XDMF sidecar")));
+  EXPECT_TRUE(isOutsideFailure(std::bad_alloc()));
 }
 
 TEST(ExitCode, EngineBreakdownsAndAnalysisErrorsAreTheRunsOwn) {

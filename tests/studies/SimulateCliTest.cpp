@@ -139,8 +139,22 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST_F(SimulateCli, MissingSceneFileIsAnError) {
   const Result r = run("simulate -q nosuch.toml");
-  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(r.code, 2);  // docs/commands.md: 2 for a bad command line
   EXPECT_NE(r.err.find("nosuch.toml"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(stray(), 0);
+}
+
+TEST_F(SimulateCli, BadOptionOrValueExits2WithOneLine) {
+  const std::string scene = write("s.toml", kShort);
+  for (const std::string& args : {"simulate -q --bogus " + scene,
+                                 "simulate -q --checkpoint-every 0 " + scene}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("granwave: ", 0), 0u) << r.err;
+  }
+  EXPECT_EQ(run("--version").code, 0);
   EXPECT_EQ(stray(), 0);
 }
 
