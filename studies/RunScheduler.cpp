@@ -1,7 +1,9 @@
 #include "studies/RunScheduler.hpp"
 
 #include <fmt/format.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <deque>
@@ -9,6 +11,7 @@
 #include <fstream>
 #include <list>
 #include <map>
+#include <system_error>
 #include <thread>
 
 #include "scene/SceneParser.hpp"
@@ -92,9 +95,19 @@ std::vector<RunRecord> runAll(const std::vector<RunRequest>& requests, const Run
   const std::string exe = selfExecutable();
   const auto& interrupt = installInterruptFlag();
   std::list<Running> running;  // list: children are not move-assignable
+  // Atomically and checked: a child reading a truncated scene would run the default scene
+  // and its result would be cached under this one's name.
   auto writeScene = [](const RunRecord& r) {
-    std::ofstream scene(r.scenePath());
-    scene << sceneToToml(r.request.scene);
+    const std::string tmp = r.scenePath() + ".tmp-" + std::to_string(::getpid());
+    {
+      std::ofstream scene(tmp, std::ios::trunc);
+      scene << sceneToToml(r.request.scene);
+      scene.flush();
+      if (!scene)
+        throw std::system_error(errno ? errno : EIO, std::generic_category(),
+                                r.scenePath() + ": cannot write the run's scene");
+    }
+    std::filesystem::rename(tmp, r.scenePath());
   };
   // A run continued from a checkpoint costs what it had spent before, too.
   std::map<std::size_t, std::pair<double, double>> earlier_cost;
