@@ -45,8 +45,7 @@ pid_t makeZombie() {
     std::string line;
     std::getline(stat, line);
     const std::size_t close = line.rfind(')');
-    if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z')
-      return pid;
+    if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'Z') return pid;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return pid;

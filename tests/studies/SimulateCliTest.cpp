@@ -147,8 +147,8 @@ TEST_F(SimulateCli, MissingSceneFileIsAnError) {
 
 TEST_F(SimulateCli, BadOptionOrValueExits2WithOneLine) {
   const std::string scene = write("s.toml", kShort);
-  for (const std::string& args : {"simulate -q --bogus " + scene,
-                                 "simulate -q --checkpoint-every 0 " + scene}) {
+  for (const std::string& args :
+       {"simulate -q --bogus " + scene, "simulate -q --checkpoint-every 0 " + scene}) {
     const Result r = run(args);
     EXPECT_EQ(r.code, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
