@@ -199,6 +199,7 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
       f.writeAttribute<double>(g, "mean_relative_displacement_d",
                                pr.state.mean_relative_displacement_d);
       f.writeAttribute<double>(g, "bonds_kept", pr.state.bonds_kept);
+      f.writeAttribute<double>(g, "bonds_kept_per_cycle", pr.state.bonds_kept_per_cycle);
     }
   }
 

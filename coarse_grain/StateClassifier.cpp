@@ -113,12 +113,16 @@ StateResult classifyState(const std::vector<Snapshot>& cycles, double width, dou
 
   StateResult r;
   r.cycles = K;
+  r.bonds_kept_per_cycle = 0;
   for (int c = 0; c + 1 < K; ++c) {
     const Displacements d = displacements(cycles[c], cycles[c + 1], width, periodic_x);
     r.mean_relative_displacement_d +=
         relativeDisplacement(cycles[c], d, width, periodic_x, opt.neighbour_cutoff * diameter) /
         diameter / (K - 1);
     r.mean_collective_displacement_d += std::hypot(d.mean_dx, d.mean_dz) / diameter / (K - 1);
+    r.bonds_kept_per_cycle += bondsKept(cycles[c], cycles[c + 1], width, periodic_x,
+                                        opt.bond_cutoff * diameter, opt.broken_beyond * diameter) /
+                              (K - 1);
   }
   for (const Snapshot& s : cycles) {
     const HexaticOrder h = hexaticOrder(s.x, s.z, width, diameter, periodic_x, opt.hexatic);

@@ -22,7 +22,8 @@
 //     crystal      else if <|psi6|> > crystal_threshold,
 //     amorphous    otherwise.
 //
-// Also reported, not deciding: the mobility relative to the neighbours per cycle,
+// Also reported, not deciding: B1, the bonds kept from one cycle to the next (mean over the
+// K - 1 pairs), and the mobility relative to the neighbours per cycle,
 // delta_j = | Delta r_j - (1/|N_j|) sum_{k in N_j} Delta r_k | with Delta r_j = r_j(c+1) -
 // r_j(c) and N_j the neighbours of j at cycle c (centre distance below neighbour_cutoff;
 // without neighbours, against the whole layer's mean), M = <delta_j> in d.
@@ -72,6 +73,10 @@ struct StateOptions {
 struct StateResult {
   LayerState state = LayerState::amorphous;
   double bonds_kept = 1;  // fraction of the first cycle's bonds intact at the last (B)
+  // Reported, not deciding: the bonds of each cycle intact one cycle later, averaged over
+  // the K - 1 consecutive pairs (B1). The paper judges the layer over one free flight; B1
+  // asks whether a layer that is fluid over K - 1 cycles is caged over one.
+  double bonds_kept_per_cycle = 1;
   double mean_relative_displacement_d = 0;    // M / d
   double mean_collective_displacement_d = 0;  // |<Delta r_j>_j| / d, averaged over pairs
   double mean_abs_psi6 = 0;                   // <|psi6|>, averaged over snapshots

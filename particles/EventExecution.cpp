@@ -75,8 +75,11 @@ void EdSimulation::noteCollision(int i, int partner) {
         fmt::format("inelastic collapse at t = {:.9f} s: particle {} collided {} times within "
                     "{:.3g} s (last with {}){}",
                     now_, i, s.burst, cfg_.collapse_window, with,
-                    cfg_.tc > 0 ? "; the TC model is on, so the scene itself is singular"
-                                : "; switch the TC model on (contact.tc = \"auto\")"),
+                    cfg_.tc > 0
+                        ? "; the TC model is on, so these collisions were elastic: a contact the "
+                          "engine does not resolve (docs/physics.md, \"Inelastic "
+                          "collapse\"); please report the scene and seed"
+                        : "; switch the TC model on (contact.tc = \"auto\")"),
         now_, i, partner);
   }
 }
@@ -117,12 +120,17 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
 
 void EdSimulation::doRiderPair(int i, int j, double rx) {
   // Two particles carried by the same wall: their vertical separation is fixed, so the
-  // contact acts horizontally, a 1D collision in x (the wall takes any vertical impulse).
-  // Riders exist only with walls, so there is no virial to book (pressure is measured in
-  // fully periodic boxes).
+  // contact acts horizontally (the wall takes any vertical impulse). The normal approach
+  // speed is the horizontal closing speed times |n_x| = |rx| / d; restoring e times it along
+  // n reverses the horizontal relative velocity: a 1D collision in x with e_n(approach).
+  // A pair stacked exactly (rx = 0) does not approach at all (riderPairCollisionTime): taking
+  // the horizontal speed for the approach there let two riders against a side wall swap
+  // their vx forever at one instant (a "collapse" with TC on, wet law, 4 of 72 runs of the
+  // stability grid). Riders exist only with walls, so there is no virial to book (pressure is
+  // measured in fully periodic boxes).
   ParticleState& a = p_[i];
   ParticleState& b = p_[j];
-  const double closing = rx > 0 ? b.vx - a.vx : a.vx - b.vx;
+  const double closing = (rx > 0 ? b.vx - a.vx : a.vx - b.vx) * std::abs(rx) / cfg_.diameter;
   const double tol = approachTolerance(std::abs(a.vx), std::abs(b.vx));
   if (!(closing > tol)) {
     predict(i);

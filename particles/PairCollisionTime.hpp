@@ -30,7 +30,10 @@ inline double pairCollisionTime(double rx, double rz, double vx, double vz, doub
 
 // Two particles carried by the same wall keep their vertical separation rz, so they can only
 // meet horizontally: at |rx| = sqrt(d^2 - rz^2) (never if |rz| >= d). A pair found at or
-// inside that distance (round-off) collides at once only if it approaches horizontally.
+// inside that distance (round-off) collides at once only if it approaches along the contact
+// normal n = (rx, rz) / d faster than round-off: -rx vx / d > approach_tol, as for free pairs
+// (pairCollisionTime). A pair stacked exactly on top of each other (rx = 0, e.g. both against
+// a side wall) has a vertical normal: sliding sideways moves it apart, never together.
 inline double riderPairCollisionTime(double rx, double rz, double vx, double diameter,
                                      double approach_tol = 0.0) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
@@ -38,8 +41,8 @@ inline double riderPairCollisionTime(double rx, double rz, double vx, double dia
   if (w2 <= 0.0) return kNever;
   const double gap = std::abs(rx) - std::sqrt(w2);
   const double closing = rx > 0 ? -vx : vx;  // > 0 when |rx| decreases
-  if (closing <= approach_tol) return kNever;
-  return gap <= 0.0 ? 0.0 : gap / closing;
+  if (gap <= 0.0) return closing * std::abs(rx) > approach_tol * diameter ? 0.0 : kNever;
+  return closing > approach_tol ? gap / closing : kNever;
 }
 
 }  // namespace granwave

@@ -1,7 +1,7 @@
 #pragma once
 // Figures drawn from phase-resolved profiles (particles or hydro) that several studies share:
 // the density space-time plot with fronts, centre of mass and plates (the paper's Fig. 5), and
-// profiles at chosen phases (Figs. 3b, 7).
+// profiles at chosen phases (Figs. 4b, 7).
 #include <string>
 #include <vector>
 

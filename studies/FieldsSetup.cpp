@@ -60,12 +60,12 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
     const PatternResult& p = a.patterns;
     r += fmt::format(
         "patterns        at t/T = {:.1f} over the last {} cycles: {}; surface wave {} (mode {}, "
-        "{:.2f} d, alternation {:.2f}); {} kink(s); <|psi6|> {:.2f}, bonds kept {:.2f}, relative "
-        "mobility {:.2f} d per cycle\n",
+        "{:.2f} d, alternation {:.2f}); {} kink(s); <|psi6|> {:.2f}, bonds kept {:.2f} over the "
+        "cycles and {:.2f} per cycle, relative mobility {:.2f} d per cycle\n",
         p.phase, p.cycles, toString(p.state.state), p.surface_wave.detected ? "yes" : "no",
         p.surface_wave.mode, p.surface_wave.amplitude_d, p.surface_wave.alternation_fraction,
         p.kinks.kink_x.size(), p.state.mean_abs_psi6, p.state.bonds_kept,
-        p.state.mean_relative_displacement_d);
+        p.state.bonds_kept_per_cycle, p.state.mean_relative_displacement_d);
   }
   for (const FrontEpisode& e : a.fronts) {
     if (!e.from_impact) continue;

@@ -108,6 +108,7 @@ LayerPatterns readLayerPatterns(const std::string& path) {
   r.psi6 = f.readAttribute<double>(g, "mean_abs_psi6");
   r.mobility_d = f.readAttribute<double>(g, "mean_relative_displacement_d");
   r.bonds_kept = f.readAttribute<double>(g, "bonds_kept");
+  r.bonds_kept_per_cycle = f.readAttribute<double>(g, "bonds_kept_per_cycle");
   return r;
 }
 

@@ -59,6 +59,7 @@ struct LayerPatterns {
   bool surface_wave = false;
   int surface_wave_mode = 0, kinks = 0, period = 0;
   double surface_wave_amplitude_d = 0, psi6 = 0, mobility_d = 0, bonds_kept = 1;
+  double bonds_kept_per_cycle = 1;
 };
 
 // Particle positions of one recorded frame (lab frame, m).

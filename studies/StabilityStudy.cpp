@@ -4,11 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
+#include <set>
 
-#include "scene/SceneDerived.hpp"
 #include "studies/FailureReason.hpp"
 #include "studies/RunOutputs.hpp"
+#include "studies/StabilityFeatures.hpp"
+#include "studies/StabilityGrid.hpp"
 #include "studies/StudyResults.hpp"
 #include "studies/StudyScenes.hpp"
 
@@ -29,33 +30,31 @@ struct Config {
   std::vector<double> frequencies{10, 15, 20, 30};
   std::vector<double> gammas{2, 3, 4, 5, 6, 7};
   double cycles = 150;
-  int seed = 1, window = 2, blocks = 5;
+  std::vector<int> seeds{1, 2, 3};
+  int window = 2, blocks = 5;
   bool hydro = true;
   int gallery_per_state = 2;
-};
-
-struct Cell {
-  bool ok = false;
-  std::string message;
-  LayerPatterns p;
 };
 
 class StabilityStudy final : public Study {
  public:
   explicit StabilityStudy(StudyFile& f);
   std::string title() const override {
-    return "Stability diagrams of dry and wet vibrated layers (the paper's Fig. 4)";
+    return "Stability diagrams of dry and wet vibrated layers (the paper's Fig. 3)";
   }
   std::vector<RunRequest> plan() const override { return requests_; }
   void analyse(const RunSet& runs, h5::File& f, Report& report) const override;
 
  private:
-  std::string edLabel(int law, double f, double gamma) const {
-    return fmt::format("ED {} f={} Gamma={}", kLaw[law], g(f), g(gamma));
+  std::string edLabel(int law, double f, double gamma, int seed) const {
+    return fmt::format("ED {} f={} Gamma={} seed {}", kLaw[law], g(f), g(gamma), seed);
   }
   std::string hydroLabel(int law, double f, double gamma) const {
     return fmt::format("hydro {} f={} Gamma={}", kLaw[law], g(f), g(gamma));
   }
+  StabilityGrid verdicts(const RunSet& runs) const;
+  void diagrams(const StabilityGrid& grid, ReportSection& s) const;
+  void gallery(const RunSet& runs, const StabilityGrid& grid, Report& report) const;
   Config c_;
   std::vector<RunRequest> requests_;
 };
@@ -67,7 +66,7 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
   c_.frequencies = f.numbers("grid", "frequencies", c_.frequencies);
   c_.gammas = f.numbers("grid", "gammas", c_.gammas);
   c_.cycles = f.number("particles", "cycles", c_.cycles);
-  c_.seed = f.integer("particles", "seed", c_.seed);
+  c_.seeds = f.integers("particles", "seeds", c_.seeds);
   c_.window = f.integer("particles", "window_cycles", c_.window);
   c_.blocks = f.integer("particles", "blocks", c_.blocks);
   c_.hydro = f.boolean("hydro", "enabled", c_.hydro);
@@ -76,6 +75,13 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
     if (!(v > 0)) f.fail("grid", "frequencies", "expected positive frequencies in Hz");
   for (double v : c_.gammas)
     if (!(v > 1)) f.fail("grid", "gammas", "expected Gamma > 1 (the layer must take off)");
+  if (std::set<double>(c_.frequencies.begin(), c_.frequencies.end()).size() !=
+      c_.frequencies.size())
+    f.fail("grid", "frequencies", "expected distinct frequencies");
+  if (std::set<double>(c_.gammas.begin(), c_.gammas.end()).size() != c_.gammas.size())
+    f.fail("grid", "gammas", "expected distinct Gamma values");
+  if (std::set<int>(c_.seeds.begin(), c_.seeds.end()).size() != c_.seeds.size())
+    f.fail("particles", "seeds", "expected distinct seeds");
   if (!(c_.cycles >= 30)) f.fail("particles", "cycles", "expected at least 30 cycles");
   for (int law = 0; law < 2; ++law)
     for (double fr : c_.frequencies)
@@ -83,46 +89,167 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
         std::vector<std::string> o = c_.set;
         o.push_back(fmt::format("drive.frequency={}", g(fr)));
         o.push_back(fmt::format("drive.gamma={}", g(gamma)));
-        o.push_back(fmt::format("run.seed={}", c_.seed));
         o.push_back(fmt::format("run.duration={:.6g}", c_.cycles / fr));
-        RunRequest q =
-            runRequest(RunKind::Particles, edLabel(law, fr, gamma), studyScene(f, c_.path[law], o));
-        q.window_cycles = c_.window;
-        q.blocks = c_.blocks;
-        requests_.push_back(std::move(q));
+        for (int seed : c_.seeds) {
+          std::vector<std::string> os = o;
+          os.push_back(fmt::format("run.seed={}", seed));
+          RunRequest q = runRequest(RunKind::Particles, edLabel(law, fr, gamma, seed),
+                                    studyScene(f, c_.path[law], os));
+          q.window_cycles = c_.window;
+          q.blocks = c_.blocks;
+          requests_.push_back(std::move(q));
+        }
+        // The continuum has no seed; the scene names the first one only so that it is
+        // complete (the seed does not enter the hydro solver).
+        o.push_back(fmt::format("run.seed={}", c_.seeds.front()));
         if (c_.hydro)
           requests_.push_back(runRequest(RunKind::Hydro, hydroLabel(law, fr, gamma),
                                          studyScene(f, c_.path[law], o)));
       }
 }
 
-std::string describe(const Cell& c) {
-  if (!c.ok) return "failed: " + c.message.substr(0, 50);
-  if (!c.p.available) return fmt::format("period {}, not classified", c.p.period);
-  std::string s = fmt::format("{}, period {} (psi6 {:.2f}, bonds kept {:.2f})", c.p.state,
-                              c.p.period, c.p.psi6, c.p.bonds_kept);
-  if (c.p.surface_wave)
-    s += fmt::format(", surface wave (mode {}, {:.1f} d)", c.p.surface_wave_mode,
-                     c.p.surface_wave_amplitude_d);
-  if (c.p.kinks > 0) s += fmt::format(", {} kink(s)", c.p.kinks);
+// "liquid-like (3/3), period 2 (2/3), psi6 0.63, bonds kept 0.07 over 15 cycles, 0.56 over
+// one, surface wave 2/3 (mode 2, 1.7 d)"; the failed seeds and their first reason.
+std::string describe(const LayerVerdict& v) {
+  std::string s;
+  if (v.failed > 0)
+    s = fmt::format("{} of {} seeds failed: {}", v.failed, v.runs, shortReason(v.failure));
+  if (v.period.of == 0) return s;
+  if (!s.empty()) s += "; ";
+  if (!v.classified())
+    return s + fmt::format("period {} ({}/{}), not classified", v.period.value, v.period.count,
+                           v.period.of);
+  s += fmt::format(
+      "{} ({}/{}), period {} ({}/{}), psi6 {:.2f}, bonds kept {:.2f} over 15 cycles, {:.2f} "
+      "over one",
+      v.state.value, v.state.count, v.state.of, v.period.value, v.period.count, v.period.of, v.psi6,
+      v.bonds_kept, v.bonds_kept_per_cycle);
+  const int waves =
+      v.surface_wave.value ? v.surface_wave.count : v.surface_wave.of - v.surface_wave.count;
+  if (waves > 0)
+    s += fmt::format(", surface wave {}/{} (mode {}, {:.1f} d)", waves, v.surface_wave.of,
+                     v.surface_wave_mode, v.surface_wave_amplitude_d);
+  const int kinks = v.kinks.value ? v.kinks.count : v.kinks.of - v.kinks.count;
+  if (kinks > 0) s += fmt::format(", kinks {}/{}", kinks, v.kinks.of);
   return s;
+}
+
+StabilityGrid StabilityStudy::verdicts(const RunSet& runs) const {
+  StabilityGrid grid;
+  grid.frequencies = c_.frequencies;
+  grid.gammas = c_.gammas;
+  for (int law = 0; law < 2; ++law)
+    for (double fr : c_.frequencies)
+      for (double gamma : c_.gammas) {
+        std::vector<LayerPatterns> patterns;
+        std::vector<bool> finished;
+        std::vector<std::string> messages;
+        for (int seed : c_.seeds) {
+          const RunRecord& r = runs.get(edLabel(law, fr, gamma, seed));
+          patterns.push_back(r.ok ? readLayerPatterns(r.fieldsPath()) : LayerPatterns{});
+          finished.push_back(r.ok);
+          messages.push_back(r.message);
+        }
+        grid.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+      }
+  return grid;
+}
+
+void StabilityStudy::diagrams(const StabilityGrid& grid, ReportSection& s) const {
+  const std::size_t NF = c_.frequencies.size(), NG = c_.gammas.size();
+  // Grid spacing, for the offset of the disagreement marker beside a point.
+  auto spacing = [](const std::vector<double>& v) {
+    return v.size() > 1
+               ? (*std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end())) /
+                     static_cast<double>(v.size() - 1)
+               : 1.0;
+  };
+  const double dg = 0.3 * spacing(c_.gammas), df = 0.3 * spacing(c_.frequencies);
+  for (int law = 0; law < 2; ++law) {
+    Figure fig;
+    fig.title = std::string("Stability diagram, ") + kLaw[law];
+    fig.caption =
+        "Particles, the most frequent verdict over the seeds. Unclassified or failed points are "
+        "left blank; a grey star beside a point: its seeds disagree (state, period, waves or "
+        "kinks; the table gives the votes).";
+    fig.xlabel = "Gamma";
+    fig.ylabel = "f (Hz)";
+    for (std::size_t si = 0; si < kStates.size(); ++si) {
+      std::vector<double> x, y;
+      for (std::size_t i = 0; i < NF; ++i)
+        for (std::size_t j = 0; j < NG; ++j) {
+          const LayerVerdict& v = grid.at(law, i, j);
+          if (v.classified() && v.state.value == kStates[si]) {
+            x.push_back(c_.gammas[j]);
+            y.push_back(c_.frequencies[i]);
+          }
+        }
+      Series ss = lineSeries(x, y, kStates[si], kStateColor[si]);
+      ss.style = "points";
+      ss.marker = "s";
+      fig.series.push_back(ss);
+    }
+    std::vector<double> wx, wy, kx, ky, px, py, ux, uy;
+    for (std::size_t i = 0; i < NF; ++i)
+      for (std::size_t j = 0; j < NG; ++j) {
+        const LayerVerdict& v = grid.at(law, i, j);
+        const double x = c_.gammas[j], y = c_.frequencies[i];
+        if (v.classified() && v.surface_wave.value) wx.push_back(x), wy.push_back(y);
+        if (v.classified() && v.kinks.value) kx.push_back(x), ky.push_back(y);
+        if (v.period.of > 0 && v.period.value >= 2) px.push_back(x), py.push_back(y);
+        if (v.runs > 0 && !v.seedsAgree()) ux.push_back(x + dg), uy.push_back(y + df);
+      }
+    const struct {
+      std::vector<double>&x, &y;
+      const char *label, *color, *marker;
+    } marks[] = {{wx, wy, "surface waves", "red", "^"},
+                 {kx, ky, "kinks", "black", "x"},
+                 {px, py, "period >= 2", "black", "."},
+                 {ux, uy, "seeds disagree", "grey", "*"}};
+    for (const auto& m : marks) {
+      Series p = lineSeries(m.x, m.y, m.label, m.color);
+      p.style = "points";
+      p.marker = m.marker;
+      fig.series.push_back(p);
+    }
+    s.add(std::move(fig));
+  }
+
+  // Differences dry - wet in the paper's symbols.
+  Figure diff;
+  diff.title = "Where dry and wet differ";
+  diff.caption =
+      "Points where the dry and the wet layer differ in a symbol of the paper's diagram (state, "
+      "surface waves, kinks; most frequent over the seeds), and, separately, in the "
+      "centre-of-mass period, which the paper's diagram does not show.";
+  diff.xlabel = "Gamma";
+  diff.ylabel = "f (Hz)";
+  std::vector<double> dx, dy, qx, qy;
+  for (std::size_t i = 0; i < NF; ++i)
+    for (std::size_t j = 0; j < NG; ++j) {
+      if (grid.symbolsDiffer(i, j)) dx.push_back(c_.gammas[j]), dy.push_back(c_.frequencies[i]);
+      if (grid.periodsDiffer(i, j)) qx.push_back(c_.gammas[j]), qy.push_back(c_.frequencies[i]);
+    }
+  Series ds = lineSeries(dx, dy, "state, waves or kinks differ", "purple");
+  ds.style = "points";
+  ds.marker = "D";
+  Series qs = lineSeries(qx, qy, "period differs", "black");
+  qs.style = "points";
+  qs.marker = "+";
+  diff.series.push_back(ds);
+  diff.series.push_back(qs);
+  s.add(std::move(diff));
 }
 
 void StabilityStudy::analyse(const RunSet& runs, h5::File& f, Report& report) const {
   f.createGroup(kRoot);
   const std::size_t NF = c_.frequencies.size(), NG = c_.gammas.size();
-  std::vector<Cell> cells[2];
+  const StabilityGrid grid = verdicts(runs);
   std::vector<std::string> hydro_cell[2];
   std::vector<double> hydro_period[2];
   for (int law = 0; law < 2; ++law)
     for (double fr : c_.frequencies)
       for (double gamma : c_.gammas) {
-        const RunRecord& r = runs.get(edLabel(law, fr, gamma));
-        Cell c;
-        c.ok = r.ok;
-        c.message = r.message;
-        if (r.ok) c.p = readLayerPatterns(r.fieldsPath());
-        cells[law].push_back(c);
         std::string h = "not run";
         double hp = NAN;
         if (c_.hydro) {
@@ -138,254 +265,114 @@ void StabilityStudy::analyse(const RunSet& runs, h5::File& f, Report& report) co
         hydro_cell[law].push_back(h);
         hydro_period[law].push_back(hp);
       }
-  auto at = [&](int law, std::size_t i, std::size_t j) -> const Cell& {
-    return cells[law][i * NG + j];
-  };
 
+  std::string seeds;
+  for (int sd : c_.seeds) seeds += (seeds.empty() ? "" : ", ") + std::to_string(sd);
   ReportSection& s = report.section(
       "Stability diagrams",
       fmt::format(
-          "Each (f, Gamma) point is one particle run of {:g} cycles (seed {}), classified live "
-          "over its last 16 cycles at the free-flight phase (docs/classification.md): "
+          "Each (f, Gamma) point is {} particle run(s) of {:g} cycles (seeds {}), each classified "
+          "live over its last 16 cycles at the free-flight phase (docs/classification.md): "
           "crystal / amorphous / liquid-like from the hexatic order and the bonds kept over 15 "
-          "cycles, "
-          "standing surface waves, kinks, and the centre-of-mass period. Markers: squares "
+          "cycles, standing surface waves, kinks, and the centre-of-mass period. A point's label "
+          "is the most frequent over its seeds (ties: the first seed listed). Markers: squares "
           "coloured by state; red triangles: surface waves; black crosses: kinks; a black dot: "
           "period 2 or more. A layer is caged (crystal or amorphous) when it keeps at least half "
           "of its neighbour bonds over the 15 cycles. This rule replaced a per-cycle mobility "
           "threshold after that threshold called the f = 10 Hz, Gamma = 2 layer liquid-like "
           "although it keeps 81 % of its bonds with <|psi6|> = 0.90 (the paper: solid there); "
           "the reasons, and what the old rule gave, are in docs/classification.md.",
-          c_.cycles, c_.seed));
-  for (int law = 0; law < 2; ++law) {
-    Figure fig;
-    fig.title = std::string("Stability diagram, ") + kLaw[law];
-    fig.caption = "Particles. Unclassified or failed points are left blank.";
-    fig.xlabel = "Gamma";
-    fig.ylabel = "f (Hz)";
-    std::vector<double> wx, wy, kx, ky, px, py;
-    for (std::size_t si = 0; si < kStates.size(); ++si) {
-      std::vector<double> x, y;
-      for (std::size_t i = 0; i < NF; ++i)
-        for (std::size_t j = 0; j < NG; ++j) {
-          const Cell& c = at(law, i, j);
-          if (c.ok && c.p.available && c.p.state == kStates[si]) {
-            x.push_back(c_.gammas[j]);
-            y.push_back(c_.frequencies[i]);
-          }
-        }
-      Series ss = lineSeries(x, y, kStates[si], kStateColor[si]);
-      ss.style = "points";
-      ss.marker = "s";
-      fig.series.push_back(ss);
-    }
-    for (std::size_t i = 0; i < NF; ++i)
-      for (std::size_t j = 0; j < NG; ++j) {
-        const Cell& c = at(law, i, j);
-        if (!c.ok) continue;
-        if (c.p.surface_wave) {
-          wx.push_back(c_.gammas[j]);
-          wy.push_back(c_.frequencies[i]);
-        }
-        if (c.p.kinks > 0) {
-          kx.push_back(c_.gammas[j]);
-          ky.push_back(c_.frequencies[i]);
-        }
-        if (c.p.period >= 2) {
-          px.push_back(c_.gammas[j]);
-          py.push_back(c_.frequencies[i]);
-        }
-      }
-    Series w = lineSeries(wx, wy, "surface waves", "red");
-    w.style = "points";
-    w.marker = "^";
-    Series k = lineSeries(kx, ky, "kinks", "black");
-    k.style = "points";
-    k.marker = "x";
-    Series p = lineSeries(px, py, "period >= 2", "black");
-    p.style = "points";
-    p.marker = ".";
-    fig.series.push_back(w);
-    fig.series.push_back(k);
-    fig.series.push_back(p);
-    s.add(std::move(fig));
-  }
+          c_.seeds.size(), c_.cycles, seeds));
+  diagrams(grid, s);
 
-  // Differences dry - wet.
-  Figure diff;
-  diff.title = "Where dry and wet differ";
-  diff.caption =
-      "Points where the state, the surface waves or the period of the dry and the wet layer "
-      "differ (particles).";
-  diff.xlabel = "Gamma";
-  diff.ylabel = "f (Hz)";
-  std::vector<double> dx, dy;
-  std::vector<double> diff_per_f;
-  for (std::size_t i = 0; i < NF; ++i) {
-    int n = 0;
-    for (std::size_t j = 0; j < NG; ++j) {
-      const Cell &a = at(0, i, j), &b = at(1, i, j);
-      if (!(a.ok && b.ok && a.p.available && b.p.available)) continue;
-      if (a.p.state != b.p.state || a.p.surface_wave != b.p.surface_wave ||
-          a.p.period != b.p.period) {
-        dx.push_back(c_.gammas[j]);
-        dy.push_back(c_.frequencies[i]);
-        ++n;
-      }
-    }
-    diff_per_f.push_back(n);
-  }
-  Series ds = lineSeries(dx, dy, "dry and wet differ", "purple");
-  ds.style = "points";
-  ds.marker = "D";
-  diff.series.push_back(ds);
-  s.add(std::move(diff));
+  const std::vector<double> diff_per_f = grid.symbolDifferencesPerFrequency();
+  const std::vector<double> period_diff_per_f = grid.periodDifferencesPerFrequency();
   putSeries(f, kRoot + "/frequencies", c_.frequencies, "Hz");
   putSeries(f, kRoot + "/gammas", c_.gammas, "1");
+  std::vector<double> seed_values(c_.seeds.begin(), c_.seeds.end());
+  putSeries(f, kRoot + "/seeds", seed_values, "1");
   putSeries(f, kRoot + "/differences_per_frequency", diff_per_f, "1");
+  putSeries(f, kRoot + "/period_differences_per_frequency", period_diff_per_f, "1");
 
   Table t;
   t.title = "Every point of the grid";
+  t.caption =
+      "Particles: the most frequent state and period over the seeds with their votes, the mean "
+      "<|psi6|> and bonds kept (over the 15 cycles, which decides, and from one cycle to the "
+      "next, reported) over the classified seeds, and how many seeds show surface waves "
+      "or kinks. Hydro: one run per point (the continuum has no seed).";
   t.columns = {"f (Hz)", "Gamma", "dry (particles)", "wet (particles)", "hydro dry", "hydro wet"};
   for (std::size_t i = 0; i < NF; ++i)
     for (std::size_t j = 0; j < NG; ++j)
-      t.rows.push_back({g(c_.frequencies[i]), g(c_.gammas[j]), describe(at(0, i, j)),
-                        describe(at(1, i, j)), hydro_cell[0][i * NG + j],
+      t.rows.push_back({g(c_.frequencies[i]), g(c_.gammas[j]), describe(grid.at(0, i, j)),
+                        describe(grid.at(1, i, j)), hydro_cell[0][i * NG + j],
                         hydro_cell[1][i * NG + j]});
   for (int law = 0; law < 2; ++law) {
-    std::vector<double> state, period, wave, kinks;
-    for (const Cell& c : cells[law]) {
-      const auto it = std::find(kStates.begin(), kStates.end(), c.p.state);
-      state.push_back(c.ok && c.p.available && it != kStates.end() ? it - kStates.begin() : NAN);
-      period.push_back(c.ok ? c.p.period : NAN);
-      wave.push_back(c.ok && c.p.surface_wave ? 1 : 0);
-      kinks.push_back(c.ok ? c.p.kinks : NAN);
+    std::vector<double> state, state_votes, classified, period, period_votes, wave, wave_votes,
+        kinks, kinks_votes, agree;
+    for (const LayerVerdict& v : grid.verdicts[law]) {
+      const auto it = std::find(kStates.begin(), kStates.end(), v.state.value);
+      const bool c = v.classified();
+      state.push_back(c && it != kStates.end() ? static_cast<double>(it - kStates.begin()) : NAN);
+      state_votes.push_back(v.state.count);
+      classified.push_back(v.state.of);
+      period.push_back(v.period.of > 0 ? v.period.value : NAN);
+      period_votes.push_back(v.period.count);
+      wave.push_back(c ? v.surface_wave.value : NAN);
+      wave_votes.push_back(v.surface_wave.count);
+      kinks.push_back(c ? v.kinks.value : NAN);
+      kinks_votes.push_back(v.kinks.count);
+      agree.push_back(v.seedsAgree());
     }
     const std::string grp = fmt::format("{}/{}", kRoot, kLaw[law]);
     f.createGroup(grp);
     f.writeStringAttribute(grp, "state_codes", "0 crystal, 1 amorphous, 2 liquid-like");
+    f.writeStringAttribute(grp, "layout",
+                           "[frequency][gamma], row-major; most frequent over the seeds, "
+                           "*_votes: seeds that gave it, classified_seeds: seeds that voted");
     putSeries(f, grp + "/state", state, "1");
+    putSeries(f, grp + "/state_votes", state_votes, "1");
+    putSeries(f, grp + "/classified_seeds", classified, "1");
     putSeries(f, grp + "/period", period, "1");
+    putSeries(f, grp + "/period_votes", period_votes, "1");
     putSeries(f, grp + "/surface_wave", wave, "1");
+    putSeries(f, grp + "/surface_wave_votes", wave_votes, "1");
     putSeries(f, grp + "/kinks", kinks, "1");
+    putSeries(f, grp + "/kinks_votes", kinks_votes, "1");
+    putSeries(f, grp + "/seeds_agree", agree, "1");
     putSeries(f, grp + "/hydro_period", hydro_period[law], "1");
   }
 
-  // The paper's qualitative features (Sec. III), checked on this grid at its lowest f.
   ReportSection& q = report.section(
       "The paper's features, point by point",
       "Huang, Sec. III: at f = 10 Hz both layers fluidize as Gamma rises from 2 and solidify "
       "again at Gamma >= 6 (lid contact); for Gamma in [3, 5] the dry layer shows surface waves "
-      "and the wet one does not; the dry-wet differences shrink as f rises. Each is checked "
-      "here at the grid's lowest frequency.");
-  Table qt;
-  qt.title = "Paper against particles";
-  qt.columns = {"feature (paper)", "particles (this grid)", "reproduced"};
-  const std::size_t i0 = static_cast<std::size_t>(
-      std::min_element(c_.frequencies.begin(), c_.frequencies.end()) - c_.frequencies.begin());
-  const double f0 = c_.frequencies[i0];
-  auto list = [&](int law, auto pred) {
-    std::string out;
-    for (std::size_t j = 0; j < NG; ++j)
-      if (pred(at(law, i0, j), c_.gammas[j])) out += (out.empty() ? "" : ", ") + g(c_.gammas[j]);
-    return out.empty() ? std::string("none") : out;
-  };
-  auto liquid = [](const Cell& c, double) { return c.ok && c.p.state == "liquid-like"; };
-  for (int law = 0; law < 2; ++law) {
-    bool fluid_mid = true, solid_low = true, solid_high = true;
-    bool any_low = false, any_high = false, any_mid = false;
-    for (std::size_t j = 0; j < NG; ++j) {
-      const Cell& c = at(law, i0, j);
-      const double gm = c_.gammas[j];
-      if (!c.ok || !c.p.available) continue;
-      if (gm >= 3 && gm <= 5) {
-        any_mid = true;
-        fluid_mid &= c.p.state == "liquid-like";
-      }
-      if (gm <= 2) {
-        any_low = true;
-        solid_low &= c.p.state != "liquid-like";
-      }
-      if (gm >= 6) {
-        any_high = true;
-        solid_high &= c.p.state != "liquid-like";
-      }
-    }
-    qt.rows.push_back(
-        {fmt::format("{}: fluidized for Gamma in [3, 5], not at Gamma = 2 (f = {:g} Hz)", kLaw[law],
-                     f0),
-         "liquid-like at Gamma = " + list(law, liquid),
-         !any_mid                               ? "not tested (no classified Gamma in [3, 5])"
-         : fluid_mid && (!any_low || solid_low) ? "yes"
-                                                : "no"});
-    qt.rows.push_back({fmt::format("{}: solid again at Gamma >= 6 (f = {:g} Hz)", kLaw[law], f0),
-                       "not liquid-like at Gamma = " + list(law,
-                                                            [](const Cell& c, double) {
-                                                              return c.ok && c.p.available &&
-                                                                     c.p.state != "liquid-like";
-                                                            }),
-                       any_high ? (solid_high ? "yes" : "no") : "not on the grid (Gamma < 6)"});
-  }
-  bool dry_waves = true, wet_none = true, any_wave_point = false;
-  for (std::size_t j = 0; j < NG; ++j) {
-    if (c_.gammas[j] < 3 || c_.gammas[j] > 5) continue;
-    any_wave_point = true;
-    dry_waves &= at(0, i0, j).ok && at(0, i0, j).p.surface_wave;
-    wet_none &= !(at(1, i0, j).ok && at(1, i0, j).p.surface_wave);
-  }
-  auto waves = [](const Cell& c, double) { return c.ok && c.p.surface_wave; };
-  qt.rows.push_back(
-      {fmt::format("surface waves dry, none wet, Gamma in [3, 5] (f = {:g} Hz)", f0),
-       "surface waves: dry at Gamma = " + list(0, waves) + "; wet at Gamma = " + list(1, waves),
-       !any_wave_point         ? "not tested (no Gamma in [3, 5])"
-       : dry_waves && wet_none ? "yes"
-                               : "no"});
-  // "At Gamma ~ 5, both dry and wet granular layers crystallize again" as f increases (paper,
-  // Sec. III): the frequencies above f0 where both layers are crystals at Gamma = 5.
-  const auto g5 = std::find(c_.gammas.begin(), c_.gammas.end(), 5.0);
-  if (g5 != c_.gammas.end() && NF > 1) {
-    const std::size_t j5 = static_cast<std::size_t>(g5 - c_.gammas.begin());
-    std::string where;
-    bool at_top = false;
-    const double f_top = *std::max_element(c_.frequencies.begin(), c_.frequencies.end());
-    for (std::size_t i = 0; i < NF; ++i) {
-      const Cell &a = at(0, i, j5), &b = at(1, i, j5);
-      const bool both = a.ok && b.ok && a.p.available && b.p.available && a.p.state == "crystal" &&
-                        b.p.state == "crystal";
-      if (!both || c_.frequencies[i] <= f0) continue;
-      where += (where.empty() ? "" : ", ") + g(c_.frequencies[i]) + " Hz";
-      at_top |= c_.frequencies[i] == f_top;
-    }
-    qt.rows.push_back({"both layers crystallize again at Gamma = 5 as f increases",
-                       "both crystals at Gamma = 5: " + (where.empty() ? "nowhere" : where),
-                       at_top ? "yes (at the highest f)" : "no"});
-  }
-  // Compared with the lowest frequency; with no difference anywhere there is nothing to shrink.
-  bool shrinking = diff_per_f[i0] > 0;
-  for (std::size_t i = 0; i < NF; ++i)
-    if (c_.frequencies[i] > f0) shrinking &= diff_per_f[i] < diff_per_f[i0];
-  std::string per_f;
-  for (std::size_t i = 0; i < NF; ++i)
-    per_f += fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c_.frequencies[i], diff_per_f[i]);
-  qt.rows.push_back({"dry-wet differences smaller at higher f", "points that differ: " + per_f,
-                     shrinking ? "yes" : "no"});
-  q.add(std::move(qt));
-  bool waves_reversed = false;  // dry without, wet with surface waves somewhere at f0
-  for (std::size_t j = 0; j < NG; ++j)
-    waves_reversed |= at(1, i0, j).ok && at(1, i0, j).p.surface_wave &&
-                      !(at(0, i0, j).ok && at(0, i0, j).p.surface_wave);
-  if (waves_reversed)
-    q.addText(
-        "Why the surface waves differ (measured, docs/fields.md and docs/physics.md): with the "
-        "paper's laws, the dry layer's restitution is about 0.9 at its impact speeds, and at "
-        "f = 10 Hz, Gamma = 4 it moves with period 1 without the f/2 standing wave; the wet "
-        "layer, whose slow collisions are completely inelastic, doubles its period and carries "
-        "a standing f/2 wave. A constant-restitution scan puts the switch between e = 0.9 "
-        "(period 1) and e = 0.8 (period 2), as soft-sphere DEM does. The paper reports the "
-        "reverse pattern; the particle model here follows its stated laws, nothing was tuned.");
+      "and the wet one does not; at Gamma ~ 5 both crystallize again as f rises; the dry-wet "
+      "differences shrink as f rises. The first three are checked at the grid's lowest "
+      "frequency. A difference is one in the paper's symbols (state, surface waves, kinks); "
+      "the periods are compared separately.");
+  reportPaperFeatures(grid, f, kRoot + "/features", q);
   s.add(std::move(t));
+  gallery(runs, grid, report);
 
-  // Gallery: the last recorded frame of a few runs per state.
+  std::string per_f, period_per_f;
+  for (std::size_t i = 0; i < NF; ++i) {
+    per_f += fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c_.frequencies[i], diff_per_f[i]);
+    period_per_f +=
+        fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c_.frequencies[i], period_diff_per_f[i]);
+  }
+  report.summary = fmt::format(
+      "{} grid points per law (f = {:g} to {:g} Hz, Gamma = {:g} to {:g}), {} seed(s) each. "
+      "Points where dry and wet differ in state, surface waves or kinks, per frequency: {}; in "
+      "the period: {}.",
+      NF * NG, c_.frequencies.front(), c_.frequencies.back(), c_.gammas.front(), c_.gammas.back(),
+      c_.seeds.size(), per_f, period_per_f);
+}
+
+// The last recorded frame of a few runs per state: the first seed at each point whose run
+// has the point's state.
+void StabilityStudy::gallery(const RunSet& runs, const StabilityGrid& grid, Report& report) const {
+  const std::size_t NF = c_.frequencies.size(), NG = c_.gammas.size();
   ReportSection& gal = report.section(
       "Snapshot gallery", "The last recorded frame (one per cycle, at phase 0) of up to " +
                               std::to_string(c_.gallery_per_state) +
@@ -395,38 +382,42 @@ void StabilityStudy::analyse(const RunSet& runs, h5::File& f, Report& report) co
     for (int law = 0; law < 2 && shown < c_.gallery_per_state; ++law)
       for (std::size_t i = 0; i < NF && shown < c_.gallery_per_state; ++i)
         for (std::size_t j = 0; j < NG && shown < c_.gallery_per_state; ++j) {
-          const Cell& c = at(law, i, j);
-          if (!(c.ok && c.p.available && c.p.state == kStates[si])) continue;
-          const RunRecord& r = runs.get(edLabel(law, c_.frequencies[i], c_.gammas[j]));
-          const Frame fr = readLastFrame(r.runPath());
-          const double d = r.request.scene.particles.diameter;
-          std::vector<double> x, z;
-          for (std::size_t k = 0; k < fr.x.size(); ++k) {
-            x.push_back(fr.x[k] / d);
-            z.push_back(fr.z[k] / d);
+          const LayerVerdict& v = grid.at(law, i, j);
+          if (!(v.classified() && v.state.value == kStates[si])) continue;
+          for (int seed : c_.seeds) {
+            const RunRecord& r = runs.get(edLabel(law, c_.frequencies[i], c_.gammas[j], seed));
+            if (!r.ok) continue;
+            const LayerPatterns p = readLayerPatterns(r.fieldsPath());
+            if (!(p.available && p.state == kStates[si])) continue;
+            const Frame fr = readLastFrame(r.runPath());
+            const double d = r.request.scene.particles.diameter;
+            std::vector<double> x, z;
+            for (std::size_t k = 0; k < fr.x.size(); ++k) {
+              x.push_back(fr.x[k] / d);
+              z.push_back(fr.z[k] / d);
+            }
+            Figure fg;
+            fg.title = fmt::format("{}: {} f = {:g} Hz, Gamma = {:g}, seed {}", kStates[si],
+                                   kLaw[law], c_.frequencies[i], c_.gammas[j], seed);
+            fg.caption = fmt::format(
+                "psi6 {:.2f}, bonds kept {:.2f} over 15 cycles, {:.2f} over one, period {}{}",
+                p.psi6, p.bonds_kept, p.bonds_kept_per_cycle, p.period,
+                p.surface_wave ? ", surface wave" : "");
+            fg.xlabel = "x / d";
+            fg.ylabel = "z / d";
+            Series ps = lineSeries(x, z, "particles", kStateColor[si]);
+            ps.style = "points";
+            ps.marker = "o";
+            fg.series.push_back(ps);
+            const double w = r.request.scene.container.width / d;
+            fg.series.push_back(lineSeries({0, w}, {fr.plate / d, fr.plate / d}, "plate", "black"));
+            fg.legend = false;
+            gal.add(std::move(fg));
+            ++shown;
+            break;
           }
-          Figure fg;
-          fg.title = fmt::format("{}: {} f = {:g} Hz, Gamma = {:g}", kStates[si], kLaw[law],
-                                 c_.frequencies[i], c_.gammas[j]);
-          fg.caption = describe(c);
-          fg.xlabel = "x / d";
-          fg.ylabel = "z / d";
-          Series ps = lineSeries(x, z, "particles", kStateColor[si]);
-          ps.style = "points";
-          ps.marker = "o";
-          fg.series.push_back(ps);
-          const double w = r.request.scene.container.width / d;
-          fg.series.push_back(lineSeries({0, w}, {fr.plate / d, fr.plate / d}, "plate", "black"));
-          fg.legend = false;
-          gal.add(std::move(fg));
-          ++shown;
         }
   }
-  report.summary = fmt::format(
-      "{} grid points per law (f = {:g} to {:g} Hz, Gamma = {:g} to {:g}). Differences between "
-      "dry and wet per frequency: {}.",
-      NF * NG, c_.frequencies.front(), c_.frequencies.back(), c_.gammas.front(), c_.gammas.back(),
-      per_f);
 }
 
 }  // namespace

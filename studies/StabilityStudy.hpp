@@ -1,5 +1,5 @@
 #pragma once
-// The stability study (docs/studies.md; the paper's Fig. 4): dry and wet layers over drive
+// The stability study (docs/studies.md; the paper's Fig. 3): dry and wet layers over drive
 // frequency f and acceleration Gamma, each scene run past its transient and classified live
 // (period, surface waves, kinks, crystal / amorphous / liquid-like), drawn as two diagrams
 // with the dry-wet differences marked, beside the hydro solver's period and failures on the

@@ -1,6 +1,6 @@
 #pragma once
 // The wave-fronts study (docs/studies.md): the paper's wave-propagation section (Sec. IV,
-// Figs. 3, 5, 6) from the particles and from the hydro solver, the cost of each against its
+// Figs. 4, 5, 6) from the particles and from the hydro solver, the cost of each against its
 // accuracy, where each method fails, and the simplest model that reproduces the particles.
 // The plan (runs) is built in WaveFrontsStudy.cpp, the analysis in WaveFrontsReport.cpp.
 #include <fmt/format.h>

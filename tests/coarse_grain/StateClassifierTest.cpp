@@ -89,6 +89,7 @@ TEST(StateClassifier, RigidlyVibratingLatticeIsCrystal) {
   EXPECT_GT(r.mean_collective_displacement_d, 1.0);  // the layer did move
   EXPECT_GT(r.mean_abs_psi6, 0.95);
   EXPECT_EQ(r.cycles, 6);
+  EXPECT_EQ(r.bonds_kept_per_cycle, 1.0);
 }
 
 TEST(StateClassifier, RigidlyMovingRandomPackingIsAmorphous) {
@@ -183,6 +184,22 @@ TEST(StateClassifier, PeriodicShiftAcrossTheBoundaryIsNotMobility) {
   for (double& x : b.x) x = std::fmod(x + 0.7 * d, width);
   EXPECT_NEAR(meanRelativeDisplacement(a, b, width, true, 1.5 * d), 0.0, 1e-12 * d);
   EXPECT_GT(meanRelativeDisplacement(a, b, width, false, 1.5 * d), 0.1 * d);  // walls: no image
+}
+
+TEST(StateClassifier, BondsKeptPerCycleAveragesTheConsecutivePairs) {
+  // Lattice, lattice, the lattice dilated twofold, the same again. Over the whole series every
+  // bond at d ends at 2 d > 1.5 d: B = 0. From one cycle to the next: 1 (unchanged), 0 (every
+  // bond stretched to 2 d), 1 (the dilated lattice has no bond to lose): B1 = 2/3.
+  Snapshot dilated = triangular();
+  for (std::size_t j = 0; j < dilated.x.size(); ++j) {
+    dilated.x[j] *= 2;
+    dilated.z[j] *= 2;
+  }
+  const std::vector<Snapshot> cycles = {triangular(), triangular(), dilated, dilated};
+  const StateResult r = classifyState(cycles, 2 * width, d, false);
+  EXPECT_EQ(r.bonds_kept, 0.0);
+  EXPECT_NEAR(r.bonds_kept_per_cycle, 2.0 / 3.0, 1e-15);
+  EXPECT_EQ(r.state, LayerState::liquid_like);  // B decides, not B1
 }
 
 TEST(StateClassifier, RejectsTooFewSnapshotsOrDifferentParticles) {

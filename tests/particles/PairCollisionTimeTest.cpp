@@ -61,3 +61,17 @@ TEST(RiderPairCollisionTime, RidersMeetOnlyHorizontally) {
             std::numeric_limits<double>::infinity());
   EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0), 0.0);
 }
+
+TEST(RiderPairCollisionTime, RidersStackedExactlyNeverApproach) {
+  // One on top of the other (rx = 0, as two riders both against a side wall): the normal is
+  // vertical and sliding sideways either way moves them apart. Both signs once counted as
+  // "closing at once", and two such riders swapped their vx forever at one instant.
+  constexpr double never = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(granwave::riderPairCollisionTime(0.0, 0.99999998, 1e-4, 1.0), never);
+  EXPECT_EQ(granwave::riderPairCollisionTime(0.0, 0.99999998, -1e-4, 1.0), never);
+  EXPECT_EQ(granwave::riderPairCollisionTime(-0.0, 0.99999998, 1e-4, 1.0), never);
+  // Touching at a slant, the normal approach speed -rx vx / d decides against the tolerance:
+  // 1e-5 * 1e-4 = 1e-9 approaches, with a tolerance of 2e-9 it is round-off.
+  EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0, 2e-9), never);
+  EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0, 5e-10), 0.0);
+}

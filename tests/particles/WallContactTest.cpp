@@ -89,7 +89,10 @@ TEST(WallContact, RestingBallRidesPlateBelowOneGAndNeverLeaves) {
 // round-off while sliding (wet, Gamma = 7, t = 3.20 s), and, without friction, a flyer
 // touching a rider that moves horizontally into it right after an e_n = 0 collision
 // (paper wet scene, mu = 0, t = 0.0969 s): prediction scheduled a rest that execution
-// refuses. All must run through and keep the energy budget.
+// refuses; and two plate-carried particles stacked exactly on top of each other against a
+// side wall (wet, f = 15 Hz, Gamma = 2, seed 2, t = 3.94 s), whose horizontal sliding counted
+// as an approach, so that they swapped their vx at one instant until the collapse detector
+// stopped the run. All must run through and keep the energy budget.
 TEST(WallContact, WetLayerAtGammaSevenRunsThroughResting) {
   Scene s = test::paperScene(RestitutionKind::Wet, 3.5);
   s.drive.gamma = 7.0;
@@ -115,6 +118,19 @@ TEST(WallContact, FrictionlessWetLayerRunsThroughFlyersSlidingIntoRiders) {
   ASSERT_NO_THROW(sim.advanceTo(0.2));
   const Observables o1 = sim.snapshot().obs;
   EXPECT_GT(o1.collisions.rests, 0u);
+  EXPECT_NEAR(test::totalEnergy(o1) - test::totalEnergy(o0), o1.wall_work - o1.dissipated_energy,
+              1e-9 * o1.wall_work);
+}
+
+TEST(WallContact, WetLayerRunsThroughRidersStackedAtASideWall) {
+  Scene s = test::paperScene(RestitutionKind::Wet, 4.0);
+  s.drive.frequency = 15.0;
+  s.drive.gamma = 2.0;
+  s.run.seed = 2;
+  EdSimulation sim = test::makeSimulation(s);
+  const Observables o0 = sim.snapshot().obs;
+  ASSERT_NO_THROW(sim.advanceTo(4.0));
+  const Observables o1 = sim.snapshot().obs;
   EXPECT_NEAR(test::totalEnergy(o1) - test::totalEnergy(o0), o1.wall_work - o1.dissipated_energy,
               1e-9 * o1.wall_work);
 }

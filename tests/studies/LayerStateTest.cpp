@@ -1,7 +1,7 @@
 // The classifiers on whole simulated layers of known state (issue 6): the paper's dry layer is
 // a crystal at Gamma = 2, f = 20 Hz (a thin, dense, barely lifted packing of monodisperse disks
 // orders hexagonally) and fluidized (liquid-like) at Gamma = 4, f = 10 Hz (the paper's scene,
-// Fig. 2). The expected states come from the paper's stability diagram (Fig. 4) at those points.
+// Fig. 2). The expected states come from the paper's stability diagram (Fig. 3) at those points.
 #include <gtest/gtest.h>
 
 #include <cstdlib>

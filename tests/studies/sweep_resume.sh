@@ -13,27 +13,44 @@ rm -rf "$work"
 mkdir -p "$work"
 "$granwave" study "$study" -o "$work/whole" -q -j 2 --no-report --checkpoint-every 0.2
 
-"$granwave" study "$study" -o "$work/killed" -q -j 2 --no-report --checkpoint-every 0.2 &
-pid=$!
-# Kill once some but not all runs are recorded and a particle run has saved a checkpoint.
-i=0
-while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ] ||
-  ! ls "$work/killed/runs" | grep -q '^particles-.*\.h5\.checkpoint$'; do
-  sleep 0.05
-  i=$((i + 1))
-  [ "$i" -lt 1200 ] || { echo "sweep_resume: no run finished within 60 s" >&2; exit 1; }
+# A particle run still going with a checkpoint (its record not yet written): the run whose
+# checkpoint the resumed study must continue from.
+unfinished_checkpoint() {
+  for c in "$work"/killed/runs/particles-*.h5.checkpoint; do
+    [ -e "$c" ] || continue
+    [ -e "${c%.h5.checkpoint}.done" ] || return 0
+  done
+  return 1
+}
+# Kill once some but not all runs are recorded and a particle run has saved a checkpoint. Runs
+# of a small sweep last a second or less, so the run can finish between the look and the kill:
+# then the killed study is started again (it resumes) and killed again, up to five times.
+attempt=0
+while :; do
+  "$granwave" study "$study" -o "$work/killed" -q -j 2 --no-report --checkpoint-every 0.2 &
+  pid=$!
+  i=0
+  while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ] ||
+    ! unfinished_checkpoint; do
+    sleep 0.05
+    i=$((i + 1))
+    [ "$i" -lt 1200 ] || { echo "sweep_resume: no run checkpointed within 60 s" >&2; exit 1; }
+  done
+  kill -9 "$pid"
+  wait "$pid" 2>/dev/null || true
+  sleep 1
+  if [ -e "$work/killed/results.h5" ]; then
+    echo "sweep_resume: a killed study left results.h5" >&2
+    exit 1
+  fi
+  if pgrep -f "$work/killed/runs" >/dev/null; then
+    echo "sweep_resume: runs of the killed study are still running" >&2
+    exit 1
+  fi
+  unfinished_checkpoint && break
+  attempt=$((attempt + 1))
+  [ "$attempt" -lt 5 ] || { echo "sweep_resume: every checkpointed run finished before the kill" >&2; exit 1; }
 done
-kill -9 "$pid"
-wait "$pid" 2>/dev/null || true
-sleep 1
-if [ -e "$work/killed/results.h5" ]; then
-  echo "sweep_resume: a killed study left results.h5" >&2
-  exit 1
-fi
-if pgrep -f "$work/killed/runs" >/dev/null; then
-  echo "sweep_resume: runs of the killed study are still running" >&2
-  exit 1
-fi
 done_before=$(ls "$work/killed/runs" | grep -c '\.done$')
 "$granwave" study "$study" -o "$work/killed" -j 2 --no-report --checkpoint-every 0.2 2> "$work/resume.log" >/dev/null
 grep -q "$done_before reused" "$work/resume.log" || {
@@ -62,5 +79,5 @@ for f in "$work"/whole/runs/particles-*.h5; do
 done
 leftovers=$(ls "$work/killed/runs" | grep -e checkpoint -e '\.tmp-' -e '\.lock$' || true)
 [ -z "$leftovers" ] || { echo "sweep_resume: left in the cache: $leftovers" >&2; exit 1; }
-echo "sweep_resume: ok ($done_before runs kept across SIGKILL; continued:" \
+echo "sweep_resume: ok ($done_before runs kept across SIGKILL, $attempt extra kill(s); continued:" \
   "$(grep -h "continuing from" "$work"/killed/runs/particles-*.log | sed 's/.* at t = //' | tr '\n' ' '))"
