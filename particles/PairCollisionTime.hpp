@@ -10,6 +10,7 @@
 // Round-off in a velocity difference scales with the velocities themselves, so callers
 // pass kApproachTolerance times the particles' speeds.
 inline constexpr double kApproachTolerance = 1e-9;
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -29,20 +30,25 @@ inline double pairCollisionTime(double rx, double rz, double vx, double vz, doub
 }
 
 // Two particles carried by the same wall keep their vertical separation rz, so they can only
-// meet horizontally: at |rx| = sqrt(d^2 - rz^2) (never if |rz| >= d). A pair found at or
-// inside that distance (round-off) collides at once only if it approaches along the contact
-// normal n = (rx, rz) / d faster than round-off: -rx vx / d > approach_tol, as for free pairs
-// (pairCollisionTime). A pair stacked exactly on top of each other (rx = 0, e.g. both against
-// a side wall) has a vertical normal: sliding sideways moves it apart, never together.
+// meet horizontally: at |rx| = c = sqrt(d^2 - rz^2) (never if |rz| >= d). Touching at
+// horizontal offset |rx| <= c, they approach along the contact normal n = (rx, rz) / d at
+// closing |rx| / d (closing: the horizontal speed that shrinks |rx|). A contact counts only
+// if that normal speed exceeds the round-off tolerance, as for free pairs (pairCollisionTime);
+// doRiderPair applies the same test. Riders stacked (almost) exactly on top of each other
+// (|rx| -> 0, e.g. both against a side wall) meet at a grazing angle: their sideways motion
+// barely changes their distance, they slide past instead of colliding. Without this test,
+// a grazing contact was predicted at once again and again in ever smaller steps (a Zeno
+// cascade), or, at rx = 0, collided forever at one instant.
 inline double riderPairCollisionTime(double rx, double rz, double vx, double diameter,
                                      double approach_tol = 0.0) {
   constexpr double kNever = std::numeric_limits<double>::infinity();
   const double w2 = diameter * diameter - rz * rz;
   if (w2 <= 0.0) return kNever;
-  const double gap = std::abs(rx) - std::sqrt(w2);
+  const double contact = std::sqrt(w2);
+  const double gap = std::abs(rx) - contact;
   const double closing = rx > 0 ? -vx : vx;  // > 0 when |rx| decreases
-  if (gap <= 0.0) return closing * std::abs(rx) > approach_tol * diameter ? 0.0 : kNever;
-  return closing > approach_tol ? gap / closing : kNever;
+  if (!(closing * std::min(std::abs(rx), contact) > approach_tol * diameter)) return kNever;
+  return gap <= 0.0 ? 0.0 : gap / closing;
 }
 
 }  // namespace granwave

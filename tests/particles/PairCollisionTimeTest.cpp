@@ -75,3 +75,14 @@ TEST(RiderPairCollisionTime, RidersStackedExactlyNeverApproach) {
   EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0, 2e-9), never);
   EXPECT_EQ(granwave::riderPairCollisionTime(1e-5, 0.99999998, -1e-4, 1.0, 5e-10), 0.0);
 }
+
+TEST(RiderPairCollisionTime, GrazingContactOfAlmostStackedRidersIsNoCollision) {
+  // rz = sqrt(1 - 1e-12) d: contact at |rx| = 1e-6 d. From rx = 2e-6 closing at 1e-4 the pair
+  // touches after 1e-2 with a normal approach speed of 1e-4 * 1e-6 = 1e-10: a collision above
+  // a tolerance of 1e-11, none (the pair slides past) below one of 1e-9. Without the test the
+  // engine predicted that grazing contact at once, again and again (a Zeno cascade).
+  const double rz = std::sqrt(1.0 - 1e-12);
+  EXPECT_NEAR(granwave::riderPairCollisionTime(2e-6, rz, -1e-4, 1.0, 1e-11), 1e-2, 1e-6);
+  EXPECT_EQ(granwave::riderPairCollisionTime(2e-6, rz, -1e-4, 1.0, 1e-9),
+            std::numeric_limits<double>::infinity());
+}

@@ -116,9 +116,9 @@ constexpr const char* kRebuilt =
     "granwave was rebuilt while this test ran; the run cache is keyed on the build, so "
     "reuse cannot be checked";
 
-// The tiny study with `replace` substituted for the line starting with `key`.
-std::string tinyWith(const std::string& key, const std::string& replace) {
-  std::ifstream in(kTinyStudy);
+// A study file with `replace` substituted for the line starting with `key`.
+std::string studyWith(const std::string& path, const std::string& key, const std::string& replace) {
+  std::ifstream in(path);
   std::string text, line;
   while (std::getline(in, line)) {
     if (line.starts_with(key)) line = replace;
@@ -129,6 +129,14 @@ std::string tinyWith(const std::string& key, const std::string& replace) {
     text += line + "\n";
   }
   return text;
+}
+
+// The tiny wave-fronts study, resp. the tiny stability sweep, with one line replaced.
+std::string tinyWith(const std::string& key, const std::string& replace) {
+  return studyWith(kTinyStudy, key, replace);
+}
+std::string tinyStabilityWith(const std::string& key, const std::string& replace) {
+  return studyWith(GRANWAVE_SOURCE_DIR "/tests/studies/data/tiny-stability.toml", key, replace);
 }
 
 struct BadStudy {
@@ -171,7 +179,15 @@ INSTANTIATE_TEST_SUITE_P(
                  "nosuch-scene.toml does not exist"},
         BadStudy{"SceneOverrideRejected", tinyWith("set", "set = [\"drive.gama=4\"]"),
                  "drive.gama"},
-        BadStudy{"MalformedToml", tinyWith("[sweep]", "[sweep"), "TOML syntax error"}),
+        BadStudy{"MalformedToml", tinyWith("[sweep]", "[sweep"), "TOML syntax error"},
+        BadStudy{"StabilityRepeatedSeed", tinyStabilityWith("seeds", "seeds = [1, 1]"),
+                 "[particles] seeds"},
+        BadStudy{"StabilitySingleSeedKeyIsUnknown", tinyStabilityWith("seeds", "seed = 1"),
+                 "unknown key 'particles.seed'"},
+        BadStudy{"StabilityRepeatedGamma", tinyStabilityWith("gammas", "gammas = [3.0, 3.0]"),
+                 "[grid] gammas"},
+        BadStudy{"StabilityTooFewCycles", tinyStabilityWith("cycles", "cycles = 10"),
+                 "[particles] cycles"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(StudyCli, MissingStudyFileIsAnError) {
