@@ -42,7 +42,7 @@ Figure spaceTimeFigure(const Profiles& p, double d, double height, std::string t
   sc.linewidth = 2;
   Series sf = lineSeries(p.phase, front, "front (T~g peak)", "tab:red");
   sf.style = "points";
-  sf.marker = "^";
+  sf.marker.push_back('^');  // not = "^": a GCC 12 -Wrestrict false positive here
   fig.series = {sp, sl, sc, sf};
   return fig;
 }

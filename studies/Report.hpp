@@ -31,6 +31,7 @@ struct Figure {
   std::vector<Series> series;
   std::vector<Image> image;  // zero or one
   bool legend = true;
+  bool legend_outside = false;  // beside the axes, for plots whose points fill them (diagrams)
 };
 
 struct Table {

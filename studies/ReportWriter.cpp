@@ -45,6 +45,7 @@ void writeFigure(h5::File& f, const std::string& g, const Figure& fig) {
   f.writeStringAttribute(g, "xscale", fig.xscale);
   f.writeStringAttribute(g, "yscale", fig.yscale);
   f.writeAttribute<std::int64_t>(g, "legend", fig.legend ? 1 : 0);
+  if (fig.legend_outside) f.writeAttribute<std::int64_t>(g, "legend_outside", 1);
   f.createGroup(g + "/series");
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const Series& s = fig.series[k];

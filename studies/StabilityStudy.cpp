@@ -174,6 +174,7 @@ void StabilityStudy::diagrams(const StabilityGrid& grid, ReportSection& s) const
         "kinks; the table gives the votes).";
     fig.xlabel = "Gamma";
     fig.ylabel = "f (Hz)";
+    fig.legend_outside = true;
     for (std::size_t si = 0; si < kStates.size(); ++si) {
       std::vector<double> x, y;
       for (std::size_t i = 0; i < NF; ++i)
@@ -224,6 +225,7 @@ void StabilityStudy::diagrams(const StabilityGrid& grid, ReportSection& s) const
       "centre-of-mass period, which the paper's diagram does not show.";
   diff.xlabel = "Gamma";
   diff.ylabel = "f (Hz)";
+  diff.legend_outside = true;
   std::vector<double> dx, dy, qx, qy;
   for (std::size_t i = 0; i < NF; ++i)
     for (std::size_t j = 0; j < NG; ++j) {

@@ -191,7 +191,10 @@ def render_figure(item):
         ax.invert_yaxis()
     ax.grid(True, alpha=0.3)
     if get_float(item, "legend", 1) and ax.get_legend_handles_labels()[0]:
-        ax.legend()
+        if get_float(item, "legend_outside", 0):  # beside the axes: diagrams fill them
+            ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+        else:
+            ax.legend()
     buf = io.BytesIO()
     fig.savefig(buf, format="png", dpi=110)
     png = base64.b64encode(buf.getvalue()).decode("ascii")
