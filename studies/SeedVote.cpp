@@ -5,8 +5,10 @@
 namespace granwave {
 
 bool LayerVerdict::seedsAgree() const {
-  return state.unanimous() && period.unanimous() && surface_wave.unanimous() && kinks.unanimous() &&
-         failed == 0;
+  // A question no seed answered is no disagreement; all seeds failing is agreement too.
+  const auto same = [](const auto& v) { return v.of == 0 || v.count == v.of; };
+  return same(state) && same(period) && same(surface_wave) && same(kinks) &&
+         (failed == 0 || failed == runs);
 }
 
 LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,

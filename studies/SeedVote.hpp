@@ -54,7 +54,8 @@ struct LayerVerdict {
   double psi6 = 0, bonds_kept = 0, bonds_kept_per_cycle = 0, surface_wave_amplitude_d = 0;
   int surface_wave_mode = 0;  // of the first voting run that has the wave
   bool classified() const { return state.of > 0; }
-  // Every vote (state, period, waves, kinks) unanimous.
+  // Every vote cast (state, period, waves, kinks) unanimous, and either no seed or every seed
+  // failed.
   bool seedsAgree() const;
 };
 

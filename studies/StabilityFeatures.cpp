@@ -39,6 +39,26 @@ std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
     }
     return s.empty() ? std::string("no classified point") : s;
   };
+  // Gamma values of the lowest f where `law` (or, with law = -1, either law) has no classified
+  // run: a check that needs them says so instead of reading them as an answer.
+  auto unclassified = [&](int law, auto in) {
+    std::string s;
+    for (std::size_t j = 0; j < NG; ++j) {
+      if (!in(grid.gammas[j])) continue;
+      const bool missing = law < 0
+                               ? !grid.at(0, i0, j).classified() || !grid.at(1, i0, j).classified()
+                               : !grid.at(law, i0, j).classified();
+      if (missing) s += (s.empty() ? "" : ", ") + g(grid.gammas[j]);
+    }
+    return s;
+  };
+  auto qualified = [](std::string verdict, const std::string& missing) {
+    if (missing.empty() || verdict.starts_with("not tested")) return verdict;
+    return verdict + " (not classified at Gamma = " + missing + ")";
+  };
+  const auto mid = [](double gm) { return gm >= 3 && gm <= 5; };
+  const auto low = [](double gm) { return gm <= 2; };
+  const auto high = [](double gm) { return gm >= 6; };
   for (int law = 0; law < 2; ++law) {
     bool fluid_mid = true, solid_low = true, solid_high = true;
     bool any_low = false, any_high = false, any_mid = false;
@@ -47,24 +67,30 @@ std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
       const double gm = grid.gammas[j];
       if (!v.classified()) continue;
       const bool liquid = v.state.value == "liquid-like";
-      if (gm >= 3 && gm <= 5) any_mid = true, fluid_mid &= liquid;
-      if (gm <= 2) any_low = true, solid_low &= !liquid;
-      if (gm >= 6) any_high = true, solid_high &= !liquid;
+      if (mid(gm)) any_mid = true, fluid_mid &= liquid;
+      if (low(gm)) any_low = true, solid_low &= !liquid;
+      if (high(gm)) any_high = true, solid_high &= !liquid;
     }
+    const std::string fluidized = !any_mid ? "not tested (no classified Gamma in [3, 5])"
+                                  : !(fluid_mid && (!any_low || solid_low)) ? "no"
+                                  : any_low                                 ? "yes"
+                                            : "yes for Gamma in [3, 5]; Gamma <= 2 not tested";
     out.push_back({std::string(kLaw[law]) + "_fluidized",
                    fmt::format("{}: fluidized for Gamma in [3, 5], not at Gamma = 2 (f = {:g} Hz)",
                                kLaw[law], f0),
                    states(law, [](double gm) { return gm <= 5; }),
-                   !any_mid ? "not tested (no classified Gamma in [3, 5])"
-                   : fluid_mid && (!any_low || solid_low) ? "yes"
-                                                          : "no"});
+                   qualified(fluidized, unclassified(law, [](double gm) { return gm <= 5; }))});
     out.push_back({std::string(kLaw[law]) + "_solid_again",
                    fmt::format("{}: solid again at Gamma >= 6 (f = {:g} Hz)", kLaw[law], f0),
-                   states(
-                       law, [](double gm) { return gm >= 6; }, true),
-                   any_high ? (solid_high ? "yes" : "no") : "not tested (no Gamma >= 6)"});
+                   states(law, high, true),
+                   qualified(any_high ? (solid_high ? "yes" : "no")
+                             : std::any_of(grid.gammas.begin(), grid.gammas.end(), high)
+                                 ? "not tested (no classified Gamma >= 6)"
+                                 : "not tested (no Gamma >= 6)",
+                             unclassified(law, high))});
   }
 
+  // Points where either law is unclassified say nothing about the pattern: left out, and named.
   bool dry_waves = true, wet_none = true, any_wave_point = false;
   std::string seen[2];
   for (std::size_t j = 0; j < NG; ++j) {
@@ -73,20 +99,21 @@ std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
       if (v.classified() && v.surface_wave.value)
         seen[law] += (seen[law].empty() ? "" : ", ") + g(grid.gammas[j]);
     }
-    if (grid.gammas[j] < 3 || grid.gammas[j] > 5) continue;
     const LayerVerdict &a = grid.at(0, i0, j), &b = grid.at(1, i0, j);
+    if (!mid(grid.gammas[j]) || !a.classified() || !b.classified()) continue;
     any_wave_point = true;
-    dry_waves &= a.classified() && a.surface_wave.value;
-    wet_none &= !(b.classified() && b.surface_wave.value);
+    dry_waves &= a.surface_wave.value;
+    wet_none &= !b.surface_wave.value;
   }
   out.push_back(
       {"surface_waves_dry_not_wet",
        fmt::format("surface waves dry, none wet, Gamma in [3, 5] (f = {:g} Hz)", f0),
        "surface waves (most seeds): dry at Gamma = " + (seen[0].empty() ? "none" : seen[0]) +
            "; wet at Gamma = " + (seen[1].empty() ? "none" : seen[1]),
-       !any_wave_point         ? "not tested (no Gamma in [3, 5])"
-       : dry_waves && wet_none ? "yes"
-                               : "no"});
+       qualified(!any_wave_point         ? "not tested (no Gamma in [3, 5] classified for both)"
+                 : dry_waves && wet_none ? "yes"
+                                         : "no",
+                 unclassified(-1, mid))});
 
   // "At Gamma ~ 5, both dry and wet granular layers crystallize again" as f increases.
   const auto g5 = std::find(grid.gammas.begin(), grid.gammas.end(), 5.0);
@@ -95,8 +122,10 @@ std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
     const double f_top = *std::max_element(grid.frequencies.begin(), grid.frequencies.end());
     std::string where;
     bool at_top = false;
+    bool top_classified = false;
     for (std::size_t i = 0; i < NF; ++i) {
       const LayerVerdict &a = grid.at(0, i, j5), &b = grid.at(1, i, j5);
+      if (grid.frequencies[i] == f_top) top_classified = a.classified() && b.classified();
       const bool both = a.classified() && b.classified() && a.state.value == "crystal" &&
                         b.state.value == "crystal";
       if (!both || grid.frequencies[i] <= f0) continue;
@@ -106,28 +135,39 @@ std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
     out.push_back({"crystal_again_at_gamma_5",
                    "both layers crystallize again at Gamma = 5 as f increases",
                    "both crystals at Gamma = 5: " + (where.empty() ? "nowhere" : where),
-                   at_top ? "yes (at the highest f)" : "no"});
+                   at_top           ? "yes (at the highest f)"
+                   : top_classified ? "no"
+                                    : "not tested (Gamma = 5 at the highest f not classified)"});
   } else {
     out.push_back({"crystal_again_at_gamma_5",
                    "both layers crystallize again at Gamma = 5 as f increases", "–",
                    "not tested (Gamma = 5 or a second frequency not on the grid)"});
   }
 
-  // Fewer differing points at every higher f than at the lowest; nothing to shrink without
-  // a difference at the lowest f.
+  // A smaller share of differing points among the comparable ones (both laws classified) at
+  // every higher f than at the lowest; nothing to shrink without a difference at the lowest f,
+  // nothing to compare at a frequency without comparable points.
   const std::vector<double> n = grid.symbolDifferencesPerFrequency();
-  bool shrinking = n[i0] > 0;
+  std::vector<double> comparable(NF, 0);
+  for (std::size_t i = 0; i < NF; ++i)
+    for (std::size_t j = 0; j < NG; ++j)
+      comparable[i] += grid.at(0, i, j).classified() && grid.at(1, i, j).classified();
+  bool shrinking = n[i0] > 0, all_comparable = true;
   std::string per_f;
   for (std::size_t i = 0; i < NF; ++i) {
-    if (grid.frequencies[i] > f0) shrinking &= n[i] < n[i0];
-    per_f += fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", grid.frequencies[i], n[i]);
+    all_comparable &= comparable[i] > 0;
+    if (grid.frequencies[i] > f0 && comparable[i] > 0 && comparable[i0] > 0)
+      shrinking &= n[i] / comparable[i] < n[i0] / comparable[i0];
+    per_f += fmt::format("{}{:g} Hz: {:g} of {:g}", i ? ", " : "", grid.frequencies[i], n[i],
+                         comparable[i]);
   }
   out.push_back({"differences_shrink_with_f",
                  "dry-wet differences (state, surface waves, kinks) smaller at higher f",
-                 "points that differ: " + per_f,
-                 NF < 2      ? "not tested (one frequency)"
-                 : shrinking ? "yes"
-                             : "no"});
+                 "points that differ, of those classified for both laws: " + per_f,
+                 NF < 2            ? "not tested (one frequency)"
+                 : !all_comparable ? "not tested (a frequency without classified points)"
+                 : shrinking       ? "yes"
+                                   : "no"});
   return out;
 }
 

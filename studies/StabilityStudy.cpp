@@ -171,7 +171,7 @@ void StabilityStudy::diagrams(const StabilityGrid& grid, ReportSection& s) const
     fig.caption =
         "Particles, the most frequent verdict over the seeds. Unclassified or failed points are "
         "left blank; a grey star beside a point: its seeds disagree (state, period, waves or "
-        "kinks; the table gives the votes).";
+        "kinks), or some of them failed; the table gives the votes.";
     fig.xlabel = "Gamma";
     fig.ylabel = "f (Hz)";
     fig.legend_outside = true;
@@ -198,7 +198,7 @@ void StabilityStudy::diagrams(const StabilityGrid& grid, ReportSection& s) const
         if (v.classified() && v.surface_wave.value) wx.push_back(x), wy.push_back(y);
         if (v.classified() && v.kinks.value) kx.push_back(x), ky.push_back(y);
         if (v.period.of > 0 && v.period.value >= 2) px.push_back(x), py.push_back(y);
-        if (v.runs > 0 && !v.seedsAgree()) ux.push_back(x + dg), uy.push_back(y + df);
+        if (v.classified() && !v.seedsAgree()) ux.push_back(x + dg), uy.push_back(y + df);
       }
     const struct {
       std::vector<double>&x, &y;

@@ -92,6 +92,16 @@ TEST(SeedVote, WavesAndKinksAreMajorityVotesAndNumbersAreMeansOverTheClassifiedS
   EXPECT_EQ(v.period.value, 2);
 }
 
+TEST(SeedVote, SeedsThatAllFailOrAnswerNothingDoNotDisagree) {
+  const LayerVerdict all_failed =
+      voteOverSeeds({LayerPatterns{}, LayerPatterns{}}, {false, false}, {"a", "b"});
+  EXPECT_FALSE(all_failed.classified());
+  EXPECT_TRUE(all_failed.seedsAgree());
+  LayerPatterns short_run;
+  short_run.period = 1;  // not classified: no state, waves or kinks voted on
+  EXPECT_TRUE(voteOverSeeds({short_run, short_run}, {true, true}, {"", ""}).seedsAgree());
+}
+
 TEST(SeedVote, MismatchedInputsAreRejected) {
   EXPECT_THROW(voteOverSeeds({classified("crystal", 1)}, {true, true}, {"", ""}),
                std::invalid_argument);

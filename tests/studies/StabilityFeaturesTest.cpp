@@ -97,6 +97,27 @@ TEST(StabilityFeatures, PointsTheChecksNeedMissingFromTheGridAreNotTested) {
   EXPECT_EQ(v.at("dry_fluidized"), "yes");
 }
 
+TEST(StabilityFeatures, UnclassifiedPointsAreLeftOutAndNamedNotReadAsAnAnswer) {
+  const std::vector<std::string> states[2][2] = {{{C, L, L, L, C}, {C, C, C, C, C}},
+                                                 {{C, L, L, L, C}, {C, C, C, C, C}}};
+  const std::vector<double> waves[2] = {{3, 4, 5}, {}};
+  StabilityGrid g = grid(kF, kGamma, states, waves);
+  // Every wet seed failed at 10 Hz, Gamma = 4 and at 30 Hz, Gamma = 5.
+  g.verdicts[1][2] = voteOverSeeds({LayerPatterns{}}, {false}, {"collapse"});
+  g.verdicts[1][5 + 3] = voteOverSeeds({LayerPatterns{}}, {false}, {"collapse"});
+  const auto v = verdicts(g);
+  EXPECT_EQ(v.at("surface_waves_dry_not_wet"), "yes (not classified at Gamma = 4)");
+  EXPECT_EQ(v.at("wet_fluidized"), "yes (not classified at Gamma = 4)");
+  EXPECT_EQ(v.at("crystal_again_at_gamma_5").rfind("not tested", 0), 0u)
+      << v.at("crystal_again_at_gamma_5");
+  // 30 Hz now has 4 comparable points, none differing: 0 of 4 < 2 of 4 at 10 Hz.
+  EXPECT_EQ(v.at("differences_shrink_with_f"), "yes");
+  // A frequency with nothing to compare cannot say whether differences shrank.
+  for (std::size_t j = 0; j < kGamma.size(); ++j)
+    g.verdicts[1][5 + j] = voteOverSeeds({LayerPatterns{}}, {false}, {"collapse"});
+  EXPECT_EQ(verdicts(g).at("differences_shrink_with_f").rfind("not tested", 0), 0u);
+}
+
 TEST(StabilityFeatures, DifferencesCountThePaperSymbolsNotThePeriod) {
   const std::vector<std::string> states[2][2] = {{{C, L, L, L, C}, {C, C, C, C, C}},
                                                  {{C, L, L, L, C}, {C, C, C, C, C}}};

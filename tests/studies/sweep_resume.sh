@@ -32,9 +32,17 @@ while :; do
   i=0
   while [ "$(ls "$work/killed/runs" 2>/dev/null | grep -c '\.done$')" -lt 4 ] ||
     ! unfinished_checkpoint; do
+    kill -0 "$pid" 2>/dev/null || {
+      echo "sweep_resume: the study ended before a run could be cut half way" >&2
+      exit 1
+    }
     sleep 0.05
     i=$((i + 1))
-    [ "$i" -lt 1200 ] || { echo "sweep_resume: no run checkpointed within 60 s" >&2; exit 1; }
+    [ "$i" -lt 1200 ] || {
+      kill -9 "$pid" 2>/dev/null || true
+      echo "sweep_resume: no run checkpointed within 60 s" >&2
+      exit 1
+    }
   done
   kill -9 "$pid"
   wait "$pid" 2>/dev/null || true
@@ -53,7 +61,7 @@ while :; do
 done
 done_before=$(ls "$work/killed/runs" | grep -c '\.done$')
 "$granwave" study "$study" -o "$work/killed" -j 2 --no-report --checkpoint-every 0.2 2> "$work/resume.log" >/dev/null
-grep -q "$done_before reused" "$work/resume.log" || {
+grep -Eq "(^|[^0-9])$done_before reused" "$work/resume.log" || {
   echo "sweep_resume: the resumed study did not reuse the $done_before finished runs:" >&2
   head -1 "$work/resume.log" >&2
   exit 1
