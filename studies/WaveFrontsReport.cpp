@@ -199,7 +199,7 @@ void WaveFrontsStudy::paperSection(const RunSet& runs, h5::File& f, Report& repo
 
   // Temperature profiles at the paper's phases, and the space-time plots.
   ReportSection& prof = report.section(
-      "Temperature profiles at the paper's phases (Fig. 3b)",
+      "Temperature profiles at the paper's phases (Fig. 4, right)",
       "Row-averaged granular temperature T~g/T0 against height at the paper's phases "
       "t/T = 0.88, 0.90, ... counted from the onset of the impact front (the paper's impact "
       "starts at 0.88; ours may start at another phase): particles (seed 1, the strong impact) "
