@@ -6,7 +6,7 @@ namespace granwave {
 
 bool LayerVerdict::seedsAgree() const {
   // A question no seed answered is no disagreement; all seeds failing is agreement too.
-  const auto same = [](const auto& v) { return v.of == 0 || v.count == v.of; };
+  const auto same = [](const auto& v) { return v.of == 0 || v.unanimous(); };
   return same(state) && same(period) && same(surface_wave) && same(kinks) &&
          (failed == 0 || failed == runs);
 }
