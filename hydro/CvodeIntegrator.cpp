@@ -32,6 +32,7 @@ struct CvodeIntegrator::Impl {
   SUNNonlinearSolver NLS = nullptr;
   void* cvode = nullptr;
   RightHandSide f;
+  BandJacobian jacobian;
   ComponentName name;
   std::vector<double> out;
   double t = 0;
@@ -53,6 +54,18 @@ struct CvodeIntegrator::Impl {
     auto* self = static_cast<Impl*>(user);
     try {
       return self->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+    } catch (const std::exception& e) {
+      self->rhs_error = e.what();
+      return -1;
+    }
+  }
+
+  static int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
+                 N_Vector) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      return self->jacobian(t, N_VGetArrayPointer(y),
+                            [J](int row, int col, double v) { SM_ELEMENT_B(J, row, col) = v; });
     } catch (const std::exception& e) {
       self->rhs_error = e.what();
       return -1;
@@ -143,6 +156,13 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
       m.LS = SUNLinSol_Band(m.y, m.A, m.ctx);
       if (!m.A || !m.LS) m.fail("SUNLinSol_Band", -20);
       m.check(CVodeSetLinearSolver(m.cvode, m.LS, m.A), "CVodeSetLinearSolver");
+      if (o.jacobian) {
+        m.jacobian = o.jacobian;
+        m.check(CVodeSetJacFn(m.cvode, Impl::jac), "CVodeSetJacFn");
+      }
+      if (o.jacobian_frequency > 0)
+        m.check(CVodeSetJacEvalFrequency(m.cvode, o.jacobian_frequency),
+                "CVodeSetJacEvalFrequency");
       break;
     case CvodeMethod::BdfKrylov:
       m.LS = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.ctx);
@@ -185,6 +205,8 @@ void CvodeIntegrator::advanceTo(double tout) {
 
 double CvodeIntegrator::time() const { return impl_->t; }
 const std::vector<double>& CvodeIntegrator::state() const { return impl_->out; }
+
+int CvodeIntegrator::largestErrorComponent() const { return impl_->worstComponent(); }
 
 CvodeStats CvodeIntegrator::stats() const {
   const Impl& m = *impl_;

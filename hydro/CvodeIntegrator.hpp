@@ -12,8 +12,14 @@
 
 namespace granwave::hydro {
 
+// Writes one element of a banded matrix: (row, column, value).
+using BandMatrixWriter = std::function<void(int row, int column, double value)>;
+// Fills the Jacobian d(dy/dt)/dy at (t, y) through the writer; 0 = success, > 0 recoverable.
+using BandJacobian = std::function<int(double t, const double* y, const BandMatrixWriter& write)>;
+
 enum class CvodeMethod {
-  BdfBanded,  // BDF, Newton, banded direct solver with a difference-quotient Jacobian
+  BdfBanded,  // BDF, Newton, banded direct solver (the caller's Jacobian, else difference
+              // quotients)
   BdfKrylov,  // BDF, Newton-Krylov (GMRES) with a band preconditioner
   Adams,      // Adams-Moulton, functional (fixed-point) iteration: non-stiff reference
 };
@@ -28,6 +34,8 @@ struct CvodeOptions {
   long max_steps = 20'000;  // per advance() call (an output interval); ~10 needed on average
   int band_upper = 0, band_lower = 0;
   std::vector<double> constraints;  // empty = none; else per component 0, 1, 2 (CVODE semantics)
+  BandJacobian jacobian;            // BdfBanded: exact Jacobian; empty = difference quotients
+  int jacobian_frequency = 0;       // max steps between Jacobian evaluations (0 = CVODE's 51)
 };
 
 struct CvodeStats {
@@ -80,6 +88,9 @@ class CvodeIntegrator {
   double time() const;
   const std::vector<double>& state() const;
   CvodeStats stats() const;
+  // The component with the largest weighted local error estimate of the last step (-1 if
+  // unavailable): where the integrator spends its steps.
+  int largestErrorComponent() const;
 
  private:
   struct Impl;

@@ -2,146 +2,229 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
+#include <vector>
 
 namespace granwave::hydro {
 
 namespace {
 
-// max(x, floor), smoothed over a width of floor/10 so the right-hand side stays
-// differentiable (Newton needs it; physics-hydro.md 5.6).
-inline double smoothFloor(double x, double floor) {
-  const double w = 0.1 * floor;
-  return 0.5 * (x + floor + std::sqrt((x - floor) * (x - floor) + w * w));
+// Blocks of the stencil that reach one unknown: its own and two on each side. Columns of
+// blocks five apart never meet in a row, so 5 K colours give the whole band in one pass.
+constexpr int kBlockColours = 5;
+constexpr int kColours = kBlockColours * GranularHydro1D::kVars;
+using Jacobian = Jet<kColours>;
+
+double closePackedDensity(const ConstitutiveModel& m) {
+  return kHexagonalClosePacking * m.mass / m.diskArea();
 }
 
-// Smooth van Albada slope: (a (b^2 + e) + b (a^2 + e)) / (a^2 + b^2 + 2 e).
-inline double slope(double a, double b, double eps2) {
-  return (a * (b * b + eps2) + b * (a * a + eps2)) / (a * a + b * b + 2 * eps2);
+// The wall contact (see contactStress in the header): the elastic stress of the penetration
+// p = (r - x)_+ (x = gap/sigma) and the contact indicator p^2/(p^2 + p_1^2), both smooth.
+template <class S>
+struct WallContact {
+  S elastic, stiffness, indicator;  // stress, d(stress)/d(penetration) per metre, in contact
+};
+template <class S>
+WallContact<S> wallContact(const S& gap, double sigma, double scale) {
+  const double r = GranularHydro1D::kContactRange, p0 = GranularHydro1D::kContactStiffness;
+  const S pen = smoothPositivePart(S(r - gap / sigma), 1e-3 * r);
+  const S k = pen / p0;
+  return {scale * k * k * k, 3.0 * scale * k * k / (p0 * sigma),
+          pen * pen / (pen * pen + 0.01 * p0 * p0)};
 }
 
 }  // namespace
 
-GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model)
-    : g_(g), model_(model) {
-  // Floors far below anything physical: 1e-8 of close packing, 1e-8 of g sigma.
-  const double rho_cp = model.mass * (std::numbers::pi / (2 * std::sqrt(3.0))) /
-                        (std::numbers::pi * model.sigma * model.sigma / 4);
-  rho_min_ = 1e-8 * rho_cp;
-  theta_min_ = 1e-8 * std::max(g.gravity, 1.0) * model.sigma;
-  prim_.resize(g.cells + 4);
-  local_.resize(g.cells);
-  flux_.resize(static_cast<std::size_t>(kVars) * (g.cells + 1));
-}
+template <class S>
+struct GranularHydro1D::Workspace {
+  explicit Workspace(int cells)
+      : rho(cells),
+        length(cells),
+        theta(cells),
+        du(cells),
+        stress(cells),
+        local(cells),
+        heat(cells + 1) {}
+  // Per cell: density, length, temperature, velocity jump, normal stress Pi, closures.
+  std::vector<S> rho, length, theta, du, stress;
+  std::vector<LocalState<S>> local;
+  // Heat flux through each node, upward (W/m).
+  std::vector<S> heat;
+};
 
-double GranularHydro1D::effectiveGravity(double t) const {
-  // g_eff = g + z_b''(t) = g - A w^2 sin(w t)
-  return g_.gravity - g_.amplitude * g_.omega * g_.omega * std::sin(g_.omega * t);
-}
+struct GranularHydro1D::JetWorkspace {
+  explicit JetWorkspace(int cells, int n) : w(cells), U(n), dU(n) {}
+  Workspace<Jacobian> w;
+  std::vector<Jacobian> U, dU;
+};
 
-GranularHydro1D::Primitive GranularHydro1D::primitive(const double* U, int i) const {
-  const double* c = U + kVars * i;
-  const double rho = smoothFloor(c[0], rho_min_);
-  const double u = c[1] / rho;
-  const double theta = smoothFloor(c[2] / rho - 0.5 * u * u, theta_min_);
-  return {rho, u, theta};
-}
+GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model,
+                                 double column_mass)
+    : g_(g),
+      model_(model),
+      m_c_(column_mass / g.cells),
+      values_(std::make_unique<Workspace<double>>(g.cells)),
+      jets_(std::make_unique<JetWorkspace>(g.cells, kVars * g.cells + 2)) {}
+
+GranularHydro1D::~GranularHydro1D() = default;
 
 std::string GranularHydro1D::componentName(int k) const {
-  static const char* names[kVars] = {"density", "momentum", "energy"};
-  const int i = k / kVars;
-  return "cell " + std::to_string(i) + " (z' = " + std::to_string(cellCentre(i) * 1e3) +
-         " mm above the plate), " + names[k % kVars];
+  const int j = k / kVars;
+  switch (k % kVars) {
+    case 0:
+      return "node " + std::to_string(j) + ", height";
+    case 1:
+      return "node " + std::to_string(j) + ", velocity";
+    default:
+      return "cell " + std::to_string(j) + ", temperature";
+  }
+}
+
+double GranularHydro1D::contactStress(double gap, double speed, double rho, double c) const {
+  const WallContact<double> w =
+      wallContact(gap, model_.sigma, closePackedDensity(model_) * g_.gravity * model_.sigma);
+  const double damping = rho * c + 2 * std::sqrt(w.stiffness * 0.5 * m_c_);
+  return w.elastic + damping * std::max(speed, 0.0) * w.indicator;
+}
+
+namespace {
+
+// Cells: density, temperature, closures, stress. Newton's iterates may tangle nodes or
+// overshoot close packing: the length is floored smoothly at 1e-6 sigma and the closures see
+// the density through rho_eff = rho_max - d s((rho_max - rho)/d), s(x) = (x + sqrt(x^2+4))/2,
+// d = 1e-4 of the close-packed density: rho_eff = rho to 1e-8/(nu_max - nu) below close
+// packing and < rho_max always, so such an iterate meets a pressure growing as
+// (nu - nu_max)^2/d^4 instead of an undefined state. The temperature the closures see is
+// floored at theta_min = 1e-8 g sigma (velocities of 1e-4 sqrt(g sigma)), which keeps their
+// powers of theta and the derivatives of those bounded in a layer that has cooled to rest.
+template <class S, class W>
+void cellStates(const ConstitutiveModel& model, const HydroGeometry& g, double m_c, const S* U,
+                W& w) {
+  using std::sqrt;
+  const int N = g.cells;
+  const double rho_max = model.packingLimit() * model.mass / model.diskArea();
+  const double d = 1e-4 * model.mass / model.diskArea();
+  const double theta_min = 1e-8 * g.gravity * model.sigma;
+  const double u_width = 1e-4 * std::sqrt(g.gravity * model.sigma);
+  const double c2 = GranularHydro1D::kQuadraticViscosity, c1 = GranularHydro1D::kLinearViscosity;
+  for (int i = 0; i < N; ++i) {
+    const S& z0 = U[GranularHydro1D::heightIndex(i)];
+    const S& z1 = U[GranularHydro1D::heightIndex(i + 1)];
+    const S length = smoothPositivePart(S(z1 - z0), 1e-6 * model.sigma);
+    const S gap = (rho_max - m_c / length) / d;
+    const S rho = rho_max - d * 0.5 * (gap + sqrt(gap * gap + 4.0));
+    const S& theta = U[GranularHydro1D::temperatureIndex(i)];
+    w.theta[i] = theta_min + smoothPositivePart(S(theta - theta_min), theta_min);
+    w.rho[i] = rho;
+    w.length[i] = length;
+    w.local[i] = model.evaluate(rho, w.theta[i]);
+    const S du = U[GranularHydro1D::velocityIndex(i + 1)] - U[GranularHydro1D::velocityIndex(i)];
+    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
+    // exactly 0 at du = 0, so a resting layer feels none.
+    const S compression = 0.5 * (1.0 - du / smoothAbs(du, u_width));
+    const S q = rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
+    w.du[i] = du;
+    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / length;
+  }
+}
+
+// Heat fluxes through interior nodes, central in the temperature.
+template <class S, class W>
+void heatFluxes(int N, W& w) {
+  for (int j = 1; j < N; ++j) {
+    const S kappa = 0.5 * (w.local[j - 1].kappa_theta + w.local[j].kappa_theta);
+    w.heat[j] = -kappa * (w.theta[j] - w.theta[j - 1]) / (0.5 * (w.length[j - 1] + w.length[j]));
+  }
+}
+
+// The stress a wall exerts on the boundary node next to it, and the power its dashpot and
+// collisions take from the wall cell: [stress, dashpot heating, collisional loss].
+template <class S>
+struct WallExchange {
+  S stress, heating, loss;
+};
+// The dashpot makes the boundary node's landing completely inelastic, as the layer's is (its
+// particles' bounce is the wall collisions' loss, a separate term): the cell's acoustic
+// impedance rho c (no reflected sound) plus critical damping 2 sqrt(k m_node) of the node on
+// the contact's stiffness k; it acts while approaching (v times a smooth step in v, exactly 0
+// at rest), and its work heats the wall cell.
+template <class S>
+WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S>& cell,
+                             const S& rho, double sigma, double scale, double u_width,
+                             double node_mass) {
+  using std::sqrt;
+  const WallContact<S> c = wallContact(gap, sigma, scale);
+  const S step = 0.5 * (1.0 + approach / smoothAbs(approach, u_width));
+  const S damping = rho * cell.sound_speed + 2.0 * sqrt(c.stiffness * node_mass + 1e-30);
+  const S dashpot = damping * approach * step * c.indicator;
+  return {c.elastic + dashpot, dashpot * approach, c.indicator * cell.wall_loss * cell.p_kinetic};
+}
+
+}  // namespace
+
+template <class S>
+int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) const {
+  for (int k = 0; k < size(); ++k)
+    if (!std::isfinite(value(U[k]))) return 1;
+  const int N = g_.cells;
+  const double sigma = model_.sigma, scale = closePackedDensity(model_) * g_.gravity * sigma;
+  const double u_width = 1e-4 * std::sqrt(g_.gravity * sigma);
+  cellStates(model_, g_, m_c_, U, w);
+  heatFluxes<S>(N, w);
+  const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
+                                             w.rho[0], sigma, scale, u_width, 0.5 * m_c_);
+  const WallExchange<S> lid =
+      wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
+                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_);
+  w.heat[0] = -plate.loss;  // the energy the collisions take leaves through the walls
+  w.heat[N] = lid.loss;
+  const double geff = effectiveGravity(t);
+  // Nodes: the stress below pushes up, the stress above pushes down.
+  for (int j = 0; j <= N; ++j) {
+    const S below = j == 0 ? plate.stress : w.stress[j - 1];
+    const S above = j == N ? lid.stress : w.stress[j];
+    const double mass = j == 0 || j == N ? 0.5 * m_c_ : m_c_;
+    dU[heightIndex(j)] = U[velocityIndex(j)];
+    dU[velocityIndex(j)] = (below - above) / mass - geff;
+  }
+  // Cells: work of the kinetic pressure and the viscosities, heat conduction, cooling.
+  for (int i = 0; i < N; ++i) {
+    const LocalState<S>& l = w.local[i];
+    const S q = w.stress[i] - l.p + l.viscosity * w.du[i] / w.length[i];
+    S power = -(l.p_kinetic + q) * w.du[i] + l.viscosity * w.du[i] * w.du[i] / w.length[i] -
+              (w.heat[i + 1] - w.heat[i]) - l.cooling * w.length[i];
+    if (model_.side_wall_width > 0)
+      power -= 2.0 / model_.side_wall_width * l.wall_loss * l.p_kinetic * w.length[i];
+    if (i == 0) power += plate.heating;
+    if (i == N - 1) power += lid.heating;
+    dU[temperatureIndex(i)] = power / m_c_;
+  }
+  for (int k = 0; k < size(); ++k)
+    if (!std::isfinite(value(dU[k]))) return 1;
+  return 0;
 }
 
 int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {
-  const int N = g_.cells;
-  const double h = dz();
-  for (int k = 0; k < kVars * N; ++k)
-    if (!std::isfinite(U[k])) return 1;  // recoverable: CVODE retries with a smaller step
+  return residual(t, U, dUdt, *values_);
+}
 
-  // Primitives with two reflecting ghost cells at each wall (index shift 2).
-  for (int i = 0; i < N; ++i) prim_[i + 2] = primitive(U, i);
-  prim_[1] = {prim_[2].rho, -prim_[2].u, prim_[2].theta};
-  prim_[0] = {prim_[3].rho, -prim_[3].u, prim_[3].theta};
-  prim_[N + 2] = {prim_[N + 1].rho, -prim_[N + 1].u, prim_[N + 1].theta};
-  prim_[N + 3] = {prim_[N].rho, -prim_[N].u, prim_[N].theta};
-  for (int i = 0; i < N; ++i) local_[i] = model_.evaluate(prim_[i + 2].rho, prim_[i + 2].theta);
-
-  const double eps_rho2 = rho_min_ * rho_min_, eps_u2 = 1e-12, eps_t2 = theta_min_ * theta_min_;
-  auto faceState = [&](int cell, double side) {  // cell in ghost indexing; side = +1/2 or -1/2
-    const Primitive& a = prim_[cell - 1];
-    const Primitive& b = prim_[cell];
-    const Primitive& c = prim_[cell + 1];
-    Primitive s;
-    s.rho = smoothFloor(b.rho + side * slope(b.rho - a.rho, c.rho - b.rho, eps_rho2), rho_min_);
-    s.u = b.u + side * slope(b.u - a.u, c.u - b.u, eps_u2);
-    s.theta = smoothFloor(b.theta + side * slope(b.theta - a.theta, c.theta - b.theta, eps_t2),
-                          theta_min_);
-    return s;
-  };
-
-  // Faces f = 0..N between ghost-indexed cells f+1 (left) and f+2 (right).
-  for (int f = 0; f <= N; ++f) {
-    const Primitive L = faceState(f + 1, +0.5);
-    const Primitive R = faceState(f + 2, -0.5);
-    const double pL = model_.pressure(L.rho, L.theta);
-    const double pR = model_.pressure(R.rho, R.theta);
-    // Wave-speed bound from the adjacent cells' sound speeds (local Lax-Friedrichs); the
-    // sound speed is computed once per cell, in evaluate().
-    const double cL = local_[std::max(f - 1, 0)].sound_speed;
-    const double cR = local_[std::min(f, N - 1)].sound_speed;
-    const double mL = L.rho * L.u, mR = R.rho * R.u;
-    const double EL = L.rho * (0.5 * L.u * L.u + L.theta), ER = R.rho * (0.5 * R.u * R.u + R.theta);
-    // Local speed bound, smoothed: sqrt(x^2 + tiny) for |x|.
-    const double aL = std::sqrt(L.u * L.u + 1e-12) + cL;
-    const double aR = std::sqrt(R.u * R.u + 1e-12) + cR;
-    const double a = 0.5 * (aL + aR + std::sqrt((aL - aR) * (aL - aR) + 1e-12));
-    double* F = &flux_[static_cast<std::size_t>(kVars) * f];
-    F[0] = 0.5 * (mL + mR) - 0.5 * a * (R.rho - L.rho);
-    F[1] = 0.5 * (mL * L.u + pL + mR * R.u + pR) - 0.5 * a * (mR - mL);
-    F[2] = 0.5 * ((EL + pL) * L.u + (ER + pR) * R.u) - 0.5 * a * (ER - EL);
-    if (f == 0 || f == N) {  // walls: no mass or convective energy through them
-      F[0] = 0;
-      F[2] = 0;
-    }
-    // Viscous and heat fluxes.
-    if (f > 0 && f < N) {
-      const Primitive& pa = prim_[f + 1];
-      const Primitive& pb = prim_[f + 2];
-      const LocalState& la = local_[f - 1];
-      const LocalState& lb = local_[f];
-      const double tau = 0.5 * (la.viscosity + lb.viscosity) * (pb.u - pa.u) / h;
-      const double q = -0.5 * (la.kappa_theta + lb.kappa_theta) * (pb.theta - pa.theta) / h;
-      F[1] -= tau;
-      F[2] += -tau * 0.5 * (pa.u + pb.u) + q;
-    } else {
-      const int i = f == 0 ? 0 : N - 1;
-      const Primitive& p = prim_[i + 2];
-      const LocalState& l = local_[i];
-      const double du = f == 0 ? (p.u - 0.0) / (0.5 * h) : (0.0 - p.u) / (0.5 * h);
-      F[1] -= l.viscosity * du;
-      const double Dw = model_.wallDissipation(l.p, p.theta);
-      F[2] += f == 0 ? -Dw : Dw;  // energy flows out through both walls
-    }
+int GranularHydro1D::jacobian(double t, const double* U, const BandWriter& write) const {
+  JetWorkspace& j = *jets_;
+  const int n = size();
+  for (int k = 0; k < n; ++k) {
+    const int colour = (k / kVars) % kBlockColours * kVars + k % kVars;
+    j.U[k] = Jacobian(U[k], kColours, colour);
   }
-
-  const double geff = effectiveGravity(t);
-  for (int i = 0; i < N; ++i) {
-    const double* Fl = &flux_[static_cast<std::size_t>(kVars) * i];
-    const double* Fr = &flux_[static_cast<std::size_t>(kVars) * (i + 1)];
-    double* d = dUdt + kVars * i;
-    const double* c = U + kVars * i;
-    d[0] = -(Fr[0] - Fl[0]) / h;
-    d[1] = -(Fr[1] - Fl[1]) / h - c[0] * geff;
-    // Work of gravity with the same mass fluxes that move the mass: then total energy
-    // (kinetic + internal + potential) is conserved by the discretisation itself.
-    d[2] = -(Fr[2] - Fl[2]) / h - 0.5 * (Fl[0] + Fr[0]) * geff - local_[i].cooling -
-           model_.sideWallSink(local_[i].p, prim_[i + 2].theta);
+  if (residual(t, j.U.data(), j.dU.data(), j.w) != 0) return 1;
+  for (int k = 0; k < n; ++k)
+    if (!j.dU[k].derivatives().allFinite()) return 1;
+  for (int col = 0; col < n; ++col) {
+    const int block = col / kVars;
+    const int colour = block % kBlockColours * kVars + col % kVars;
+    const int first = std::max(0, (block - 2) * kVars), last = std::min(n, (block + 3) * kVars);
+    for (int row = first; row < last; ++row) write(row, col, j.dU[row].derivatives()[colour]);
   }
-  for (int k = 0; k < kVars * N; ++k)
-    if (!std::isfinite(dUdt[k])) return 1;
   return 0;
 }
 

@@ -1,21 +1,38 @@
 #pragma once
 // Navier-Stokes-order hydrodynamics of inelastic hard disks (d = 2) for the horizontally
-// averaged layer, in the frame of the vibrating plate (physics-hydro.md 2.1):
-//   d(rho)/dt + d(rho u)/dz = 0
-//   d(rho u)/dt + d(rho u^2 + P_zz)/dz = -rho g_eff(t)
-//   dE/dt + d((E + P_zz) u + q)/dz = -rho u g_eff(t) - D_c
-//   E = rho u^2/2 + rho theta,  P_zz = p - (lambda_b + eta) du/dz,  q = -kappa_theta d(theta)/dz
-//   g_eff(t) = g (1 - Gamma sin(omega t))
-// on z' in [0, L_z] (plate to lid), with zero mass flux through both walls, the wall's
-// collisional dissipation flux D_w = Phi_W^wall p sqrt(theta/(2 pi)) as the energy flux into
-// each wall, reflecting ghost cells for the inviscid flux and u = 0 at the wall for the
-// viscous one.
-// Method of lines: finite volumes of width dz, Kurganov-Tadmor central-upwind fluxes with
-// MUSCL reconstruction of (rho, u, theta) (van Albada limiter: smooth, so Newton converges),
-// central viscous and heat fluxes. Unknowns interleaved per cell [rho, rho u, E], so the
-// Jacobian is banded with half-bandwidth 3 s + 2 = 8 (stencil s = 2).
-// Floors (rho >= rho_min, theta >= theta_min) are applied only to temporaries inside the
-// right-hand side, never to the state (CVODE guide).
+// averaged layer, in the frame of the vibrating plate and in Lagrangian mass coordinates
+// (docs/hydro.md, "Model"). The layer of mass M per unit width is cut into N cells of equal
+// mass m_c = M/N; nodes j = 0..N at heights z_j with velocities u_j bound the cells, cell i
+// (nodes i, i+1) has length l_i = z_{i+1} - z_i, density rho_i = m_c/l_i and temperature
+// theta_i:
+//
+//   dz_j/dt     = u_j
+//   du_j/dt     = -(Pi_j - Pi_{j-1}) / m_c - g_eff(t)                (interior nodes)
+//   dtheta_i/dt = [-(p_k + q) du_i + mu_b du_i^2 / l_i - (Q_{i+1} - Q_i) - (D_c + D_side) l_i] /
+//   m_c
+//
+// with du_i = u_{i+1} - u_i, the normal stress Pi_i = p_k + p_c + q - mu_b du_i/l_i, the heat
+// flux Q_j = -kappa_theta (theta_j - theta_{j-1}) / (distance between cell centres) and
+// g_eff(t) = g + z_b''(t). The two boundary nodes carry half a cell and meet the plate (z = 0)
+// and the lid (z = L_z) through a unilateral contact: a repulsive pressure within
+// kContactRange of the wall, a dashpot on approach whose work heats the wall cell, and the
+// wall collisions' energy loss Phi_W^wall p_k sqrt(theta/(2 pi)). Away from a wall the
+// boundary node is a free surface (Pi = 0 outside): the layer lands, rests and lifts off.
+//
+// Why Lagrangian: mass is conserved exactly, a resting layer is an exact discrete
+// equilibrium (node forces are pressure differences of neighbouring cells, nothing is
+// reconstructed), there is no vacuum to integrate (an Eulerian grid spends most cells on the
+// near-empty box, whose gas forced steps of 1e-11 s), and the cells follow the mass, so the
+// dense layer is resolved at 0.1 sigma with 100 cells. q is a von Neumann-Richtmyer artificial
+// viscosity (quadratic and linear) that spreads a shock over a few cells; its work, like the
+// physical viscosity's, heats the cell. The contact pressure p_c is elastic: it enters the
+// stress, not the temperature equation.
+//
+// Unknowns interleaved per block j = [z_j, u_j, theta_j] (the last block, j = N, holds only
+// z_N, u_N), so the Jacobian is banded (half-bandwidth kHalfBand) and computed exactly by
+// forward-mode differentiation of the same code (hydro/Scalar.hpp).
+#include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -24,46 +41,80 @@
 namespace granwave::hydro {
 
 struct HydroGeometry {
-  int cells = 400;
-  double height = 0.06;  // L_z, m
+  int cells = 100;       // N, cells of equal mass
+  double height = 0.06;  // L_z, plate to lid, m
   double gravity = 9.81;
   double amplitude = 0;  // A, m
   double omega = 0;      // rad/s
+  double ramp_time = 0;  // s: the amplitude grows from 0 to A over this time (quintic ramp)
+
+  // The plate z_b(t) = A r(t) sin(omega t) and its derivatives, r the ramp.
+  double plateHeight(double t) const;
+  double plateVelocity(double t) const;
+  double plateAcceleration(double t) const;
 };
+
+// Writes one element of a banded Jacobian: (row, column, value).
+using BandWriter = std::function<void(int row, int column, double value)>;
 
 class GranularHydro1D {
  public:
-  static constexpr int kVars = 3;  // rho, rho u, E per cell
-  static constexpr int kHalfBand = 8;
+  static constexpr int kVars = 3;  // z, u, theta per block
+  static constexpr int kHalfBand = 3 * kVars - 1;
+  // Artificial viscosity q = rho (c2 du^2 + c1 c_s |du|) in compression (Caramana, Shashkov
+  // & Whalen, J. Comput. Phys. 144, 70 (1998), the 1D forms).
+  static constexpr double kQuadraticViscosity = 1.0, kLinearViscosity = 0.2;
+  // The wall contact acts within kContactRange particle diameters of a wall; its elastic
+  // stress is P_c (p/kContactStiffness)^3 at a penetration p into that range (in diameters),
+  // P_c = rho_cp g sigma: a layer of k close-packed rows rests 0.01 k^(1/3) sigma into it, a
+  // shock of 1000 P_c reaches 0.1 sigma.
+  static constexpr double kContactRange = 0.05, kContactStiffness = 0.01;
 
-  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model);
+  // column_mass = M, kg/m.
+  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model,
+                  double column_mass);
+  ~GranularHydro1D();
+  GranularHydro1D(const GranularHydro1D&) = delete;
+  GranularHydro1D& operator=(const GranularHydro1D&) = delete;
 
-  int size() const { return kVars * g_.cells; }
-  double dz() const { return g_.height / g_.cells; }
-  double cellCentre(int i) const { return (i + 0.5) * dz(); }
+  int cells() const { return g_.cells; }
+  int size() const { return kVars * g_.cells + 2; }
+  double cellMass() const { return m_c_; }
+  double columnMass() const { return m_c_ * g_.cells; }
   const HydroGeometry& geometry() const { return g_; }
   const ConstitutiveModel& model() const { return model_; }
-  double effectiveGravity(double t) const;
+  double effectiveGravity(double t) const { return g_.gravity + g_.plateAcceleration(t); }
 
-  // dU/dt; returns 0, or 1 (recoverable) if the state is not finite.
+  // Where the unknowns sit in the state vector.
+  static int heightIndex(int node) { return kVars * node; }
+  static int velocityIndex(int node) { return kVars * node + 1; }
+  static int temperatureIndex(int cell) { return kVars * cell + 2; }
+
+  // The stress of the wall contact at a gap (m) from the wall, approached at `speed` (m/s,
+  // > 0 towards the wall), for a wall cell of density rho and sound speed c: the elastic part
+  // (above) and the dashpot rho c speed while approaching in contact.
+  double contactStress(double gap, double speed, double rho, double c) const;
+
+  // dU/dt. Returns 0, or 1 (recoverable: CVODE retries with a smaller step) if the state has
+  // a non-finite value.
   int rightHandSide(double t, const double* U, double* dUdt) const;
+  // The exact Jacobian d(dU/dt)/dU, banded, written element by element. Same return codes.
+  int jacobian(double t, const double* U, const BandWriter& write) const;
 
-  // Floors used on temporaries.
-  double rhoFloor() const { return rho_min_; }
-  double thetaFloor() const { return theta_min_; }
   std::string componentName(int k) const;
 
  private:
-  struct Primitive {
-    double rho, u, theta;
-  };
-  Primitive primitive(const double* U, int i) const;
+  template <class S>
+  struct Workspace;
+  template <class S>
+  int residual(double t, const S* U, S* dUdt, Workspace<S>& w) const;
+
   HydroGeometry g_;
   ConstitutiveModel model_;
-  double rho_min_, theta_min_;
-  mutable std::vector<Primitive> prim_;
-  mutable std::vector<LocalState> local_;
-  mutable std::vector<double> flux_;
+  double m_c_;
+  std::unique_ptr<Workspace<double>> values_;
+  struct JetWorkspace;
+  std::unique_ptr<JetWorkspace> jets_;
 };
 
 }  // namespace granwave::hydro

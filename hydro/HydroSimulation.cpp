@@ -1,138 +1,186 @@
 #include "hydro/HydroSimulation.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <cstddef>
+#include <ctime>
 #include <numbers>
+
+#include "hydro/SettledLayer.hpp"
 
 namespace granwave::hydro {
 
-HydroSimulation::HydroSimulation(const GranularHydro1D& pde, int particles, double width,
-                                 const HydroRunOptions& o)
-    : pde_(pde), column_mass_(particles * pde.model().mass / width), opt_(o) {}
+namespace {
+
+double threadCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+}  // namespace
+
+std::string regimeName(HydroRegime r) {
+  switch (r) {
+    case HydroRegime::Fluidised:
+      return "fluidised";
+    case HydroRegime::Solid:
+      return "no fluidised region: the layer moves as a solid";
+    case HydroRegime::AtRest:
+      return "the layer rests on the plate";
+  }
+  return "unknown";
+}
+
+HydroSimulation::HydroSimulation(const GranularHydro1D& pde, const HydroRunOptions& o)
+    : pde_(pde), opt_(o) {}
 
 std::vector<double> HydroSimulation::initialState() const {
-  const int N = pde_.geometry().cells;
-  const double h = pde_.dz();
-  const double m = pde_.model().mass, sigma = pde_.model().sigma;
-  const double disk = std::numbers::pi * sigma * sigma / 4;
-  const double rho_layer = opt_.initial_area_fraction * m / disk;
-  const double top = column_mass_ / rho_layer;  // layer height
-  std::vector<double> U(static_cast<std::size_t>(GranularHydro1D::kVars) * N);
-  double total = 0;
-  for (int i = 0; i < N; ++i) {
-    // Smooth upper edge over one diameter; a tiny gas everywhere keeps every cell defined.
-    const double z = pde_.cellCentre(i);
-    const double shape = 0.5 * (1 - std::tanh((z - top) / (0.5 * sigma)));
-    U[3 * i] = rho_layer * shape + 1e-6 * rho_layer;
-    total += U[3 * i] * h;
-  }
-  const double scale = column_mass_ / total;
-  for (int i = 0; i < N; ++i) {
-    U[3 * i] *= scale;
-    U[3 * i + 1] = 0;
-    U[3 * i + 2] = U[3 * i] * opt_.initial_theta;
-  }
-  return U;
+  const double theta = opt_.initial_theta > 0 ? opt_.initial_theta
+                                              : 1e-3 * pde_.geometry().gravity * pde_.model().sigma;
+  return settledLayer(pde_, theta);
 }
 
 HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) const {
-  const int N = pde_.geometry().cells;
-  const double m = pde_.model().mass, sigma = pde_.model().sigma;
-  const double disk = std::numbers::pi * sigma * sigma / 4;
+  const int N = pde_.cells();
+  const ConstitutiveModel& m = pde_.model();
+  const double m_c = pde_.cellMass();
   HydroPhase p;
   p.time = t;
-  p.plate_height = pde_.geometry().amplitude * std::sin(pde_.geometry().omega * t);
-  double mz = 0, mm = 0;
+  p.plate_height = pde_.geometry().plateHeight(t);
+  p.plate_velocity = pde_.geometry().plateVelocity(t);
+  double mz = 0;
   for (int i = 0; i < N; ++i) {
-    const double rho = std::max(U[3 * i], 0.0);
-    const double u = rho > pde_.rhoFloor() ? U[3 * i + 1] / rho : 0.0;
-    const double theta =
-        rho > pde_.rhoFloor() ? std::max(U[3 * i + 2] / rho - 0.5 * u * u, 0.0) : 0.0;
-    p.n.push_back(rho / m);
-    p.u.push_back(u);
+    const double z0 = U[GranularHydro1D::heightIndex(i)],
+                 z1 = U[GranularHydro1D::heightIndex(i + 1)];
+    const double rho = m_c / (z1 - z0);
+    const double theta = std::max(U[GranularHydro1D::temperatureIndex(i)], 0.0);
+    p.z.push_back(0.5 * (z0 + z1));
+    p.n.push_back(rho / m.mass);
+    p.u.push_back(
+        0.5 * (U[GranularHydro1D::velocityIndex(i)] + U[GranularHydro1D::velocityIndex(i + 1)]));
     p.theta.push_back(theta);
-    p.area_fraction.push_back(rho / m * disk);
+    p.area_fraction.push_back(m.areaFraction(rho));
     p.pressure.push_back(
-        pde_.model().pressure(std::max(rho, pde_.rhoFloor()), std::max(theta, pde_.thetaFloor())));
-    mz += rho * pde_.cellCentre(i);
-    mm += rho;
+        m.pressure(std::min(rho, 0.999999 * m.packingLimit() * m.mass / m.diskArea()), theta));
+    mz += p.z.back();
   }
-  p.center_of_mass_height = mm > 0 ? mz / mm : 0;
+  p.center_of_mass_height = mz / N;  // cells of equal mass
   return p;
 }
 
-HydroResult HydroSimulation::run() {
-  const auto wall0 = std::chrono::steady_clock::now();
+CvodeOptions HydroSimulation::solverOptions() const {
   const HydroGeometry& g = pde_.geometry();
-  const int N = g.cells, M = opt_.samples_per_cycle;
-  const double T = 2 * std::numbers::pi / g.omega;
   const double sigma = pde_.model().sigma;
-  // Close-packed mass density (hexagonal packing of disks), kg/m^2.
-  const double rho_cp = pde_.model().mass / (std::numbers::pi * sigma * sigma / 4) *
-                        (std::numbers::pi / (2 * std::sqrt(3.0)));
+  const int N = pde_.cells();
   CvodeOptions co = opt_.cvode;
   if (co.atol.empty()) {
-    // Per-variable noise levels (physics-hydro.md 5.3): 1e-8 of close packing, times
-    // sqrt(g sigma) and g sigma for momentum and energy.
-    const double v = std::sqrt(g.gravity * sigma);
     const double a = opt_.atol_scale;
-    co.atol.resize(3 * N);
-    for (int i = 0; i < N; ++i) {
-      co.atol[3 * i] = a * rho_cp;
-      co.atol[3 * i + 1] = a * rho_cp * v;
-      co.atol[3 * i + 2] = a * rho_cp * v * v;
+    co.atol.assign(pde_.size(), 0.0);
+    for (int j = 0; j <= N; ++j) {
+      co.atol[GranularHydro1D::heightIndex(j)] = 100 * a * sigma;
+      co.atol[GranularHydro1D::velocityIndex(j)] = 100 * a * std::sqrt(g.gravity * sigma);
+      if (j < N) co.atol[GranularHydro1D::temperatureIndex(j)] = a * g.gravity * sigma;
     }
   }
   if (co.band_upper == 0) co.band_upper = co.band_lower = GranularHydro1D::kHalfBand;
-  if (co.constraints.empty() && opt_.positivity) {
-    // rho > 0 and E > 0 (CVODE semantics 2.0), momentum free (physics-hydro.md 5.4).
-    co.constraints.assign(3 * N, 2.0);
-    for (int i = 0; i < N; ++i) co.constraints[3 * i + 1] = 0.0;
+  if (co.constraints.empty()) {  // theta > 0 (CVODE semantics 2.0); heights, velocities free
+    co.constraints.assign(pde_.size(), 0.0);
+    for (int i = 0; i < N; ++i) co.constraints[GranularHydro1D::temperatureIndex(i)] = 2.0;
   }
-  if (co.max_step == 0) co.max_step = T / (2 * M);
+  const double T = 2 * std::numbers::pi / g.omega;
+  if (co.max_step == 0) co.max_step = T / (2 * opt_.samples_per_cycle);
+  co.max_steps = opt_.max_steps_per_cycle;  // per output interval: at most a cycle's budget
+  if (opt_.exact_jacobian && co.method == CvodeMethod::BdfBanded && !co.jacobian)
+    co.jacobian = [this](double t, const double* y, const BandMatrixWriter& w) {
+      return pde_.jacobian(t, y, w);
+    };
+  return co;
+}
 
-  std::vector<double> U = initialState();
+int HydroSimulation::detectPeriod(const std::vector<double>& h) const {
+  const std::size_t M = static_cast<std::size_t>(opt_.samples_per_cycle);
+  for (int P = 1; P <= opt_.max_period; ++P) {
+    const std::size_t span = static_cast<std::size_t>(P) * M;
+    if (h.size() < 2 * span) return 0;
+    const auto [lo, hi] = std::minmax_element(h.end() - static_cast<long>(span), h.end());
+    const double amp = std::max(*hi - *lo, 1e-12);
+    double worst = 0;
+    for (std::size_t k = 1; k <= span; ++k)
+      worst = std::max(worst, std::abs(h[h.size() - k] - h[h.size() - k - span]));
+    if (worst <= opt_.periodic_tolerance * amp) return P;
+  }
+  return 0;
+}
+
+HydroRegime HydroSimulation::classify(const std::vector<HydroPhase>& window) const {
+  const ConstitutiveModel& m = pde_.model();
+  double lo = 1e300, hi = -1e300, dilated = 0;
+  for (const HydroPhase& ph : window) {
+    lo = std::min(lo, ph.center_of_mass_height);
+    hi = std::max(hi, ph.center_of_mass_height);
+    const auto loose = std::count_if(ph.area_fraction.begin(), ph.area_fraction.end(),
+                                     [&](double nu) { return nu < m.contact.onset; });
+    dilated = std::max(dilated, static_cast<double>(loose) / ph.area_fraction.size());
+  }
+  // Leaving the plate by less than 1 % of a diameter is resting on it; a layer of which never
+  // more than 10 % of the mass dilates below the contact onset moves as one block.
+  if (hi - lo < 0.01 * m.sigma) return HydroRegime::AtRest;
+  return dilated < 0.1 ? HydroRegime::Solid : HydroRegime::Fluidised;
+}
+
+HydroResult HydroSimulation::run() {
+  const double cpu0 = threadCpuSeconds();
+  const HydroGeometry& g = pde_.geometry();
+  const int M = opt_.samples_per_cycle;
+  const double T = 2 * std::numbers::pi / g.omega;
+  const int ramp = static_cast<int>(std::ceil(g.ramp_time / T - 1e-9));
+
   HydroResult r;
-  for (int i = 0; i < N; ++i) r.initial_mass += U[3 * i] * pde_.dz();
   CvodeIntegrator cv(
       [this](double t, const double* y, double* yd) { return pde_.rightHandSide(t, y, yd); }, 0.0,
-      U, co, [this](int k) { return pde_.componentName(k); });
+      initialState(), solverOptions(), [this](int k) { return pde_.componentName(k); });
 
-  std::vector<HydroPhase> recent;  // last 2 cycles of phases
+  std::vector<HydroPhase> recent;  // the last max_period cycles of phases
+  const std::size_t keep = static_cast<std::size_t>(opt_.max_period) * M;
+  long steps_before = 0;
   for (int cycle = 0; cycle < opt_.max_cycles; ++cycle) {
     for (int k = 1; k <= M; ++k) {
       const double t = (cycle + static_cast<double>(k) / M) * T;
-      cv.advanceTo(t);
+      try {
+        cv.advanceTo(t);
+      } catch (const CvodeError& e) {
+        throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle + 1) + ")",
+                           e.time(), cycle + 1);
+      }
       HydroPhase ph = snapshot(t, cv.state());
       r.com_per_phase.push_back(ph.center_of_mass_height);
       recent.push_back(std::move(ph));
-      if (static_cast<int>(recent.size()) > 2 * M) recent.erase(recent.begin());
+      if (recent.size() > keep) recent.erase(recent.begin());
     }
+    const long steps = cv.stats().steps;
+    r.steps_per_cycle.push_back(steps - steps_before);
+    steps_before = steps;
     r.cycles = cycle + 1;
-    if (r.cycles < opt_.min_cycles) continue;
-    // Compare the last cycle with the one P cycles before, relative to its amplitude.
-    const auto& h = r.com_per_phase;
-    const std::size_t end = h.size();
-    const auto [lo, hi] = std::minmax_element(h.end() - M, h.end());
-    const double amp = std::max(*hi - *lo, 1e-12);
-    for (int P = 1; P <= 2 && !r.periodic; ++P) {
-      double worst = 0;
-      for (int k = 0; k < M; ++k)
-        worst = std::max(
-            worst, std::abs(h[end - 1 - k] - h[end - 1 - k - static_cast<std::size_t>(P) * M]));
-      if (worst <= opt_.periodic_tolerance * amp) {
-        r.periodic = true;
-        r.period = P;
-      }
-    }
-    if (r.periodic) break;
+    if (r.steps_per_cycle.back() > opt_.max_steps_per_cycle)
+      throw HydroFailure("no progress: cycle " + std::to_string(r.cycles) + " needed " +
+                             std::to_string(r.steps_per_cycle.back()) + " steps (budget " +
+                             std::to_string(opt_.max_steps_per_cycle) + "), last step " +
+                             std::to_string(cv.stats().last_step) + " s",
+                         cv.time(), r.cycles);
+    if (r.cycles < ramp + opt_.min_cycles) continue;
+    // Only cycles after the ramp count as the periodic state.
+    const std::vector<double> settled(r.com_per_phase.begin() + static_cast<long>(ramp) * M,
+                                      r.com_per_phase.end());
+    r.period = detectPeriod(settled);
+    if (r.period > 0) break;
   }
-  const int P = r.periodic ? r.period : 2;
+  r.periodic = r.period > 0;
+  const int P = r.periodic ? r.period : std::min(opt_.max_period, 2);
   r.window.assign(recent.end() - static_cast<long>(P) * M, recent.end());
+  r.regime = classify(r.window);
   r.stats = cv.stats();
-  for (int i = 0; i < N; ++i) r.final_mass += cv.state()[3 * i] * pde_.dz();
-  r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall0).count();
+  r.cpu_seconds = threadCpuSeconds() - cpu0;
   return r;
 }
 

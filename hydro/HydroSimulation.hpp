@@ -1,9 +1,18 @@
 #pragma once
-// Integrates GranularHydro1D with CVODE from a resting layer to the periodic state and
-// records the fields at M phases per drive cycle over the final window of P cycles (P = the
-// detected period, 1 or 2, of the centre of mass), in the plate frame.
-// Periodic state: the centre-of-mass trajectory of the last cycle repeats that of P cycles
-// earlier to `periodic_tolerance` of its oscillation amplitude.
+// Integrates GranularHydro1D with CVODE from the layer settled on the plate, the drive ramped
+// up over the first cycles (HydroGeometry::ramp_time), to the periodic state, and records the
+// fields at M phases per drive cycle over the final window of P cycles (P the period of the centre
+// of mass, 1 to `max_period`), in the plate frame (docs/hydro.md, "Runs").
+//
+// Periodic state: the centre-of-mass trajectory of the last P cycles repeats that of the P
+// cycles before to `periodic_tolerance` of its oscillation amplitude; the smallest such P.
+// A run that is not periodic after `max_cycles` ends normally with period 0 (aperiodic or
+// slower than the budget: said as such, not a failure).
+//
+// It fails fast, with one line saying why, instead of grinding: a cycle that needs more than
+// `max_steps_per_cycle` steps, or any CVODE failure, ends the run (HydroFailure).
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "hydro/CvodeIntegrator.hpp"
@@ -13,49 +22,75 @@ namespace granwave::hydro {
 
 struct HydroRunOptions {
   int samples_per_cycle = 100;  // M
-  int min_cycles = 8;
-  int max_cycles = 60;
+  int min_cycles = 6;           // after the ramp, before the periodicity test
+  int max_cycles = 60;          // in all, ramp included
+  int max_period = 4;
   double periodic_tolerance = 0.02;
-  CvodeOptions cvode;  // tolerances, method; atol and band filled in if empty
-  // atol = atol_scale x (rho_cp, rho_cp sqrt(g sigma), rho_cp g sigma) per cell when
-  // cvode.atol is empty: per-variable noise levels (physics-hydro.md 5.3).
+  CvodeOptions cvode;  // tolerances, method; atol, band, Jacobian filled in if empty
+  // atol = 100 atol_scale x (sigma, sqrt(g sigma)) for node heights and velocities and
+  // atol_scale x g sigma for temperatures when cvode.atol is empty: per-variable noise levels.
   double atol_scale = 1e-8;
-  bool positivity = true;  // CVODE constraints rho > 0, E > 0
-  double initial_area_fraction = 0.5;
-  double initial_theta = 0.01;  // m^2/s^2
+  bool exact_jacobian = true;  // false: CVODE's difference quotients (for comparison)
+  double initial_theta = 0;    // m^2/s^2 of the settled layer; 0 = 1e-3 g sigma
+  long max_steps_per_cycle = 4000;
 };
 
-// Fields of one recorded phase, plate frame, one value per cell.
+// What the layer does over the final window.
+enum class HydroRegime {
+  Fluidised,  // part of the layer dilates below the contact onset during the cycle
+  Solid,      // it never does: the layer moves as a block (no fluidised region)
+  AtRest,     // it does not leave the plate
+};
+std::string regimeName(HydroRegime r);
+
+// Fields of one recorded phase, plate frame, one value per cell (cells follow the mass, so
+// their centres z move).
 struct HydroPhase {
   double time = 0;                   // s (absolute)
   double plate_height = 0;           // z_b(t), m
+  double plate_velocity = 0;         // dz_b/dt, m/s
   double center_of_mass_height = 0;  // plate frame, m
-  std::vector<double> n, u, theta, area_fraction, pressure;
+  std::vector<double> z, n, u, theta, area_fraction, pressure;
 };
 
 struct HydroResult {
-  int period = 0;  // detected period of the centre of mass (0 = not periodic)
-  int cycles = 0;  // cycles integrated
+  int period = 0;  // period of the centre of mass in cycles (0 = not periodic)
+  int cycles = 0;  // cycles integrated, ramp included
   bool periodic = false;
+  HydroRegime regime = HydroRegime::Fluidised;
   std::vector<HydroPhase> window;     // P x M phases of the final window
   std::vector<double> com_per_phase;  // all cycles, M per cycle, plate frame
+  std::vector<long> steps_per_cycle;
   CvodeStats stats;
-  double wall_seconds = 0;
-  double initial_mass = 0, final_mass = 0;  // per unit width, kg/m
+  double cpu_seconds = 0;  // of this thread
+};
+
+// A run that cannot go on: CVODE failed or a cycle exhausted its step budget.
+class HydroFailure : public std::runtime_error {
+ public:
+  HydroFailure(const std::string& what, double time, int cycle)
+      : std::runtime_error(what), time_(time), cycle_(cycle) {}
+  double time() const { return time_; }
+  int cycle() const { return cycle_; }
+
+ private:
+  double time_;
+  int cycle_;
 };
 
 class HydroSimulation {
  public:
-  HydroSimulation(const GranularHydro1D& pde, int particles, double width,
-                  const HydroRunOptions& options);
+  HydroSimulation(const GranularHydro1D& pde, const HydroRunOptions& options);
   HydroResult run();
-  // The initial state: a layer of uniform area fraction with smooth edges, at rest.
+  // The initial state: the settled layer (hydro/SettledLayer.hpp).
   std::vector<double> initialState() const;
 
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
+  CvodeOptions solverOptions() const;
+  int detectPeriod(const std::vector<double>& com) const;
+  HydroRegime classify(const std::vector<HydroPhase>& window) const;
   const GranularHydro1D& pde_;
-  double column_mass_;  // total mass per unit width, kg/m: N m / L_x
   HydroRunOptions opt_;
 };
 

@@ -2,14 +2,8 @@
 
 namespace granwave::hydro {
 
-double pairCorrelation(double nu) {
-  const double h = 1.0 - nu;
-  return (1.0 - 7.0 * nu / 16.0) / (h * h);
-}
+double pairCorrelation(double nu) { return detail::hendersonG2(nu); }
 
-double pairCorrelationDerivative(double nu) {
-  const double h = 1.0 - nu;
-  return (25.0 - 7.0 * nu) / (16.0 * h * h * h);
-}
+double pairCorrelationDerivative(double nu) { return detail::hendersonDG2(nu); }
 
 }  // namespace granwave::hydro

@@ -195,6 +195,23 @@ double RestitutionClosure::dPhiPdTheta(double theta) const {
   return 0.0;
 }
 
+double RestitutionClosure::d2PhiPdTheta2(double theta) const {
+  switch (law_) {
+    case Law::Constant:
+      return 0.0;
+    case Law::Dry:
+      if (kappa_ == 0.0) return 0.0;
+      if (theta <= 0.0) return kInf;
+      return 0.09 * kappa_ * kGamma8_5OverGamma3_2 * std::pow(4.0 * theta, 0.1) / (theta * theta);
+    case Law::Wet: {
+      if (theta <= 0.0) return 0.0;
+      const double y = v_c_ / std::sqrt(4.0 * theta);
+      return -e_ * y * std::exp(-y * y) * (1.5 - y * y) / (kSqrtPi * theta * theta);
+    }
+  }
+  return 0.0;
+}
+
 double RestitutionClosure::effectiveRestitution(double theta) const {
   return std::sqrt(std::max(0.0, 1.0 - phiW(theta)));
 }

@@ -43,6 +43,7 @@
 // exp(-kappa^-10 / (4 theta)).
 //
 // A closed set of three laws: a value type with a switch, like particles/Restitution.hpp.
+#include "hydro/Scalar.hpp"
 
 namespace granwave::hydro {
 
@@ -80,6 +81,30 @@ class RestitutionClosure {
   double dPhiWallDTheta(double theta) const;        // s^2/m^2
   double effectiveRestitution(double theta) const;  // sqrt(1 - Phi_W)
   RestitutionAverages averages(double theta) const { return {phiW(theta), phiP(theta)}; }
+  // d^2 Phi_P / d theta^2, s^4/m^4: the sound speed contains dPhi_P/dtheta, and the exact
+  // Jacobian its derivative.
+  //   dry: 0.09 kappa [Gamma(8/5)/Gamma(3/2)] (4 theta)^{1/10} / theta^2
+  //   wet: -e_inf y exp(-y^2) (3/2 - y^2) / (sqrt(pi) theta^2)
+  double d2PhiPdTheta2(double theta) const;
+
+  // The same factors at a temperature carried as a differentiable scalar (hydro/Scalar.hpp):
+  // value and derivative from the closed forms above.
+  template <class S>
+  S phiW(const S& theta) const {
+    return chain(theta, phiW(value(theta)), dPhiWdTheta(value(theta)));
+  }
+  template <class S>
+  S phiP(const S& theta) const {
+    return chain(theta, phiP(value(theta)), dPhiPdTheta(value(theta)));
+  }
+  template <class S>
+  S phiWall(const S& theta) const {
+    return chain(theta, phiWall(value(theta)), dPhiWallDTheta(value(theta)));
+  }
+  template <class S>
+  S dPhiPdTheta(const S& theta) const {
+    return chain(theta, dPhiPdTheta(value(theta)), d2PhiPdTheta2(value(theta)));
+  }
 
   Law law() const { return law_; }
   double restitution() const { return e_; }  // e, e_inf (wet), 1 (dry: e(u -> 0))

@@ -31,19 +31,16 @@ double CoolingRate::operator()(double n, double T) const {
          gas.sigma * std::sqrt(theta);
 }
 
+namespace {
+TransportCoefficients fromKernel(const Transport<double>& k) {
+  return {k.p, k.eta, k.lambda_b, k.kappa_theta, k.D_c};
+}
+}  // namespace
+
 TransportCoefficients jenkinsRichmanTransport(const DiskGas& gas, double rho, double theta,
                                               const RestitutionAverages& a) {
-  const double nu = gas.areaFraction(gas.numberDensity(rho));
-  const double g2 = pairCorrelation(nu);
-  const double G = nu * g2;
-  const double eta0 = referenceViscosity(gas, theta);
-  TransportCoefficients t;
-  t.p = rho * theta * (1.0 + a.phi_p * G);
-  t.eta = eta0 * (1.0 / g2 + 2.0 * nu + (1.0 + 8.0 / kPi) * nu * G);
-  t.lambda_b = eta0 * (8.0 / kPi) * a.phi_p * nu * G;
-  t.kappa_theta = 4.0 * eta0 * (1.0 / g2 + 3.0 * nu + (9.0 / 4.0 + 4.0 / kPi) * nu * G);
-  t.D_c = 4.0 / std::sqrt(kPi) * a.phi_w * rho * G * theta * std::sqrt(theta) / gas.sigma;
-  return t;
+  const double g2 = pairCorrelation(gas.areaFraction(gas.numberDensity(rho)));
+  return fromKernel(jenkinsRichman(gas, rho, theta, g2, a.phi_w, a.phi_p));
 }
 
 GarzoDuftyReduced garzoDuftyReduced(double nu, const RestitutionAverages& a) {
@@ -67,18 +64,8 @@ GarzoDuftyReduced garzoDuftyReduced(double nu, const RestitutionAverages& a) {
 
 TransportCoefficients garzoDuftyTransport(const DiskGas& gas, double rho, double theta,
                                           const RestitutionAverages& a) {
-  const double n = gas.numberDensity(rho);
-  const GarzoDuftyReduced r = garzoDuftyReduced(gas.areaFraction(n), a);
-  const double eta0 = referenceViscosity(gas, theta);
-  const double nT = rho * theta;
-  const double nu0 = 2.0 * std::sqrt(kPi) * n * gas.sigma * std::sqrt(theta);  // n T / eta0
-  TransportCoefficients t;
-  t.p = r.p * nT;
-  t.eta = r.eta * eta0;
-  t.lambda_b = r.lambda_b * eta0;
-  t.kappa_theta = 4.0 * eta0 * r.kappa;  // m kappa* kappa0, kappa0 = 4 eta0 / m
-  t.D_c = r.zeta * nu0 * nT;
-  return t;
+  const double g2 = pairCorrelation(gas.areaFraction(gas.numberDensity(rho)));
+  return fromKernel(garzoDufty(gas, rho, theta, g2, a.phi_w, a.phi_p));
 }
 
 }  // namespace granwave::hydro

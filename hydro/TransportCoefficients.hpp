@@ -52,7 +52,12 @@
 // Building blocks (1.4): collision frequency omega = 2 sigma n g2 sqrt(pi theta), mean free
 // path l = 1/(2 sqrt 2 sigma n g2), cooling rate zeta = sqrt(pi) Phi_W g2 n sigma sqrt(theta),
 // Haff time 2/zeta.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "hydro/RestitutionClosure.hpp"
+#include "hydro/Scalar.hpp"
 
 namespace granwave::hydro {
 
@@ -78,7 +83,69 @@ struct GarzoDuftyReduced {
 };
 GarzoDuftyReduced garzoDuftyReduced(double nu, const RestitutionAverages& averages);
 
-// rho > 0 (kg/m^2), theta >= 0 (m^2/s^2); averages = closure.averages(theta).
+// The same sets at a given pair correlation g2 (from any PairCorrelation form) and averaged
+// restitution factors, on any scalar type (hydro/Scalar.hpp); the kernels the solver uses.
+template <class S>
+struct Transport {
+  S p, eta, lambda_b, kappa_theta, D_c;
+};
+
+// Garzo-Dufty's kinetic parts are first-Sonine results for 0 < e <= 1 whose denominators
+// nu_eta* - zeta*/2 and nu_kappa* - 2 zeta* vanish as e -> 0 (nu ~ 0.78 and above: the heat
+// conductivity turns negative for the cold wet gas, e_eff -> 0). They are evaluated at
+// e_k = max(e_eff, kGarzoDuftyRestitutionFloor) (smoothly), collisional transfer and cooling at
+// the true averages: docs/hydro.md, "Closures inside their range".
+inline constexpr double kGarzoDuftyRestitutionFloor = 0.5;
+
+template <class S>
+Transport<S> jenkinsRichman(const DiskGas& gas, const S& rho, const S& theta, const S& g2,
+                            const S& phi_w, const S& phi_p) {
+  using std::sqrt;
+  constexpr double kPi = std::numbers::pi;
+  const S nu = rho * (kPi * gas.sigma * gas.sigma / (4.0 * gas.mass));
+  const S G = nu * g2;
+  const S eta0 = gas.mass / (2.0 * gas.sigma) * sqrt(theta / kPi);
+  Transport<S> t;
+  t.p = rho * theta * (1.0 + phi_p * G);
+  t.eta = eta0 * (1.0 / g2 + 2.0 * nu + (1.0 + 8.0 / kPi) * nu * G);
+  t.lambda_b = eta0 * (8.0 / kPi) * phi_p * nu * G;
+  t.kappa_theta = 4.0 * eta0 * (1.0 / g2 + 3.0 * nu + (9.0 / 4.0 + 4.0 / kPi) * nu * G);
+  t.D_c = 4.0 / std::sqrt(kPi) * phi_w * rho * G * theta * sqrt(theta) / gas.sigma;
+  return t;
+}
+
+template <class S>
+Transport<S> garzoDufty(const DiskGas& gas, const S& rho, const S& theta, const S& g2,
+                        const S& phi_w, const S& phi_p) {
+  using std::sqrt;
+  constexpr double kPi = std::numbers::pi;
+  const double f2 = kGarzoDuftyRestitutionFloor * kGarzoDuftyRestitutionFloor;
+  const S n = rho / gas.mass;
+  const S nu = n * (kPi * gas.sigma * gas.sigma / 4.0);
+  const S G = nu * g2;
+  // e_k^2 = max(1 - Phi_W, floor^2), smoothed over 0.005: positive, so sqrt is differentiable.
+  const S e = sqrt(smoothMax(S(1.0 - phi_w), constantLike(rho, f2), 0.005));
+  const S zeta_k = 0.5 * (1.0 - e * e) * g2;  // zeta* at e_k, inside the kinetic parts
+  const S nu_eta = g2 * (7.0 - 3.0 * e) * (1.0 + e) / 8.0;
+  const S eta_k = (1.0 - 0.25 * (1.0 + e) * (1.0 - 3.0 * e) * G) / (nu_eta - 0.5 * zeta_k);
+  const S lambda_b = 8.0 / kPi * phi_p * nu * G;
+  const S eta = eta_k * (1.0 + 0.5 * phi_p * G) + 0.5 * lambda_b;
+  const S nu_kappa = g2 * 0.5 * (1.0 + e) * (0.5 + 15.0 / 8.0 * (1.0 - e));
+  const S kappa_k = 0.5 * (1.0 + 3.0 / 8.0 * (1.0 + e) * (1.0 + e) * (2.0 * e - 1.0) * G) /
+                    (nu_kappa - 2.0 * zeta_k);
+  const S kappa = kappa_k * (1.0 + 0.75 * phi_p * G) + 2.0 / kPi * phi_p * nu * G;
+  const S eta0 = gas.mass / (2.0 * gas.sigma) * sqrt(theta / kPi);
+  const S nu0 = 2.0 * std::sqrt(kPi) * n * gas.sigma * sqrt(theta);
+  Transport<S> t;
+  t.p = (1.0 + phi_p * G) * rho * theta;
+  t.eta = eta * eta0;
+  t.lambda_b = lambda_b * eta0;
+  t.kappa_theta = 4.0 * eta0 * kappa;
+  t.D_c = 0.5 * phi_w * g2 * nu0 * rho * theta;
+  return t;
+}
+
+// rho > 0 (kg/m^2), theta >= 0 (m^2/s^2); averages = closure.averages(theta). Henderson g2.
 TransportCoefficients jenkinsRichmanTransport(const DiskGas& gas, double rho, double theta,
                                               const RestitutionAverages& averages);
 TransportCoefficients garzoDuftyTransport(const DiskGas& gas, double rho, double theta,
