@@ -19,6 +19,8 @@
 // The pressure is elastic (a function of density only): it enters the momentum balance, and
 // its work is exchanged reversibly with the flow's kinetic energy, never with the granular
 // temperature (docs/hydro.md, "Internal energy").
+#include <cmath>
+
 #include "hydro/PairCorrelation.hpp"
 #include "hydro/Scalar.hpp"
 
@@ -28,23 +30,22 @@ struct ContactPressure {
   double onset = 0.82;                            // nu_min
   double close_packing = kHexagonalClosePacking;  // nu_max
   double scale = 0.0;                             // P_c, N/m; 0 = no contact pressure
-  static constexpr double kOnsetWidth = 2e-3;     // smoothing of (nu - nu_min)_+
+  static constexpr double kOnsetWidth = 2e-3;     // (nu - nu_min)_+ blended over +-this
 
   template <class S>
   S pressure(const S& nu) const {
     if (scale == 0.0) return constantLike(nu, 0.0);
-    const S x = smoothPositivePart(S(nu - onset), kOnsetWidth);
-    const S r = x / (close_packing - nu);
+    const S r = blendedMax(S(nu - onset), 0.0, kOnsetWidth) / (close_packing - nu);
     return scale * r * r;
   }
   // dp_c/dnu.
   template <class S>
   S derivative(const S& nu) const {
-    using std::sqrt;
     if (scale == 0.0) return constantLike(nu, 0.0);
     const S d = nu - onset;
-    const S x = smoothPositivePart(d, kOnsetWidth);
-    const S dx = 0.5 * (1.0 + d / sqrt(d * d + kOnsetWidth * kOnsetWidth));
+    const S x = blendedMax(d, 0.0, kOnsetWidth);
+    S dx = constantLike(nu, value(d) >= kOnsetWidth ? 1.0 : 0.0);
+    if (std::abs(value(d)) < kOnsetWidth) dx = (d + kOnsetWidth) / (2.0 * kOnsetWidth);
     const S y = close_packing - nu;
     return 2.0 * scale * (x / y) * (dx / y + x / (y * y));
   }

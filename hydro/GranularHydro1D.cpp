@@ -64,6 +64,12 @@ GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel
     : g_(g),
       model_(model),
       m_c_(column_mass / g.cells),
+      reg_{model.packingLimit() * model.mass / model.diskArea(),
+           1e-4 * model.mass / model.diskArea(),
+           1e-6 * model.sigma,
+           1e-8 * std::max(g.gravity, 1.0) * model.sigma,
+           1e-4 * std::sqrt(std::max(g.gravity, 1.0) * model.sigma),
+           closePackedDensity(model) * std::max(g.gravity, 1.0) * model.sigma},
       values_(std::make_unique<Workspace<double>>(g.cells)),
       jets_(std::make_unique<JetWorkspace>(g.cells, kVars * g.cells + 2)) {}
 
@@ -82,50 +88,46 @@ std::string GranularHydro1D::componentName(int k) const {
 }
 
 double GranularHydro1D::contactStress(double gap, double speed, double rho, double c) const {
-  const WallContact<double> w =
-      wallContact(gap, model_.sigma, closePackedDensity(model_) * g_.gravity * model_.sigma);
+  const WallContact<double> w = wallContact(gap, model_.sigma, reg_.contact_scale);
   const double damping = rho * c + 2 * std::sqrt(w.stiffness * 0.5 * m_c_);
   return w.elastic + damping * std::max(speed, 0.0) * w.indicator;
 }
 
 namespace {
 
-// Cells: density, temperature, closures, stress. Newton's iterates may tangle nodes or
-// overshoot close packing: the length is floored smoothly at 1e-6 sigma and the closures see
-// the density through rho_eff = rho_max - d s((rho_max - rho)/d), s(x) = (x + sqrt(x^2+4))/2,
-// d = 1e-4 of the close-packed density: rho_eff = rho to 1e-8/(nu_max - nu) below close
-// packing and < rho_max always, so such an iterate meets a pressure growing as
-// (nu - nu_max)^2/d^4 instead of an undefined state. The temperature the closures see is
-// floored at theta_min = 1e-8 g sigma (velocities of 1e-4 sqrt(g sigma)), which keeps their
-// powers of theta and the derivatives of those bounded in a layer that has cooled to rest.
-template <class S, class W>
-void cellStates(const ConstitutiveModel& model, const HydroGeometry& g, double m_c, const S* U,
-                W& w) {
+// The cell as the closures see it (GranularHydro1D::cellView in the header).
+template <class S>
+struct EffectiveCell {
+  S rho, length, theta;
+};
+template <class S, class R>
+EffectiveCell<S> effectiveCell(const R& reg, double m_c, const S& z0, const S& z1, const S& theta) {
   using std::sqrt;
-  const int N = g.cells;
-  const double rho_max = model.packingLimit() * model.mass / model.diskArea();
-  const double d = 1e-4 * model.mass / model.diskArea();
-  const double theta_min = 1e-8 * g.gravity * model.sigma;
-  const double u_width = 1e-4 * std::sqrt(g.gravity * model.sigma);
+  const S length = smoothPositivePart(S(z1 - z0), reg.length_floor);
+  const S gap = (reg.rho_max - m_c / length) / reg.packing_width;
+  const S rho = reg.rho_max - reg.packing_width * 0.5 * (gap + sqrt(gap * gap + 4.0));
+  return {rho, length, reg.theta_min + smoothPositivePart(S(theta - reg.theta_min), reg.theta_min)};
+}
+
+// Cells: density, temperature, closures, stress.
+template <class S, class W, class R>
+void cellStates(const ConstitutiveModel& model, const R& reg, int N, double m_c, const S* U, W& w) {
   const double c2 = GranularHydro1D::kQuadraticViscosity, c1 = GranularHydro1D::kLinearViscosity;
   for (int i = 0; i < N; ++i) {
-    const S& z0 = U[GranularHydro1D::heightIndex(i)];
-    const S& z1 = U[GranularHydro1D::heightIndex(i + 1)];
-    const S length = smoothPositivePart(S(z1 - z0), 1e-6 * model.sigma);
-    const S gap = (rho_max - m_c / length) / d;
-    const S rho = rho_max - d * 0.5 * (gap + sqrt(gap * gap + 4.0));
-    const S& theta = U[GranularHydro1D::temperatureIndex(i)];
-    w.theta[i] = theta_min + smoothPositivePart(S(theta - theta_min), theta_min);
-    w.rho[i] = rho;
-    w.length[i] = length;
-    w.local[i] = model.evaluate(rho, w.theta[i]);
+    const EffectiveCell<S> c = effectiveCell(reg, m_c, U[GranularHydro1D::heightIndex(i)],
+                                             U[GranularHydro1D::heightIndex(i + 1)],
+                                             U[GranularHydro1D::temperatureIndex(i)]);
+    w.rho[i] = c.rho;
+    w.length[i] = c.length;
+    w.theta[i] = c.theta;
+    w.local[i] = model.evaluate(c.rho, c.theta);
     const S du = U[GranularHydro1D::velocityIndex(i + 1)] - U[GranularHydro1D::velocityIndex(i)];
     // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
     // exactly 0 at du = 0, so a resting layer feels none.
-    const S compression = 0.5 * (1.0 - du / smoothAbs(du, u_width));
-    const S q = rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
+    const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg.u_width));
+    const S q = c.rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
     w.du[i] = du;
-    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / length;
+    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
   }
 }
 
@@ -168,9 +170,8 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   for (int k = 0; k < size(); ++k)
     if (!std::isfinite(value(U[k]))) return 1;
   const int N = g_.cells;
-  const double sigma = model_.sigma, scale = closePackedDensity(model_) * g_.gravity * sigma;
-  const double u_width = 1e-4 * std::sqrt(g_.gravity * sigma);
-  cellStates(model_, g_, m_c_, U, w);
+  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
+  cellStates(model_, reg_, N, m_c_, U, w);
   heatFluxes<S>(N, w);
   const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
                                              w.rho[0], sigma, scale, u_width, 0.5 * m_c_);
@@ -203,6 +204,24 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   for (int k = 0; k < size(); ++k)
     if (!std::isfinite(value(dU[k]))) return 1;
   return 0;
+}
+
+GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {
+  const EffectiveCell<double> c =
+      effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+  return {c.rho, c.theta};
+}
+
+double GranularHydro1D::spacingFor(double rho_eff) const {
+  const double y = (reg_.rho_max - rho_eff) / reg_.packing_width;  // s((rho_max - rho)/d) = y
+  const double rho = reg_.rho_max - reg_.packing_width * (y - 1 / y);
+  const double length = m_c_ / rho, w = reg_.length_floor;
+  return length - w * w / (4 * length);  // smoothPositivePart(l, w) = length
+}
+
+double GranularHydro1D::effectiveTemperature(double theta) const {
+  const double x = theta - reg_.theta_min;
+  return reg_.theta_min + 0.5 * (x + std::sqrt(x * x + reg_.theta_min * reg_.theta_min));
 }
 
 int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {

@@ -95,6 +95,25 @@ class GranularHydro1D {
   // (above) and the dashpot rho c speed while approaching in contact.
   double contactStress(double gap, double speed, double rho, double c) const;
 
+  // What the closures see of a cell (docs/hydro.md, "Admissible states"): Newton's iterates
+  // may tangle nodes or overshoot close packing, so the length is floored smoothly at
+  // 1e-6 sigma and the density mapped through rho_eff = rho_max - d s((rho_max - rho)/d),
+  // s(x) = (x + sqrt(x^2 + 4))/2, d = 1e-4 of the close-packed density (rho_eff = rho to
+  // 1e-8/(nu_max - nu) below close packing and < rho_max always, so such an iterate meets a
+  // pressure growing as (nu - nu_max)^2/d^4 instead of an undefined state); the temperature
+  // is floored at theta_min = 1e-8 g sigma, which keeps the closures' powers of theta and
+  // their derivatives bounded in a layer that has cooled to rest.
+  struct CellView {
+    double rho, theta;
+  };
+  CellView cellView(const double* U, int cell) const;
+  // The node spacing l whose cell the closures see at density rho_eff (the mapping's exact
+  // inverse), and the temperature they see for theta.
+  double spacingFor(double rho_eff) const;
+  double effectiveTemperature(double theta) const;
+  // Velocities below this are noise (1e-4 sqrt(g sigma)): the width of the smooth switches.
+  double velocityNoise() const { return reg_.u_width; }
+
   // dU/dt. Returns 0, or 1 (recoverable: CVODE retries with a smaller step) if the state has
   // a non-finite value.
   int rightHandSide(double t, const double* U, double* dUdt) const;
@@ -109,9 +128,14 @@ class GranularHydro1D {
   template <class S>
   int residual(double t, const S* U, S* dUdt, Workspace<S>& w) const;
 
+  // Scales of the regularisations above, fixed at construction.
+  struct Regularisation {
+    double rho_max, packing_width, length_floor, theta_min, u_width, contact_scale;
+  };
   HydroGeometry g_;
   ConstitutiveModel model_;
   double m_c_;
+  Regularisation reg_;
   std::unique_ptr<Workspace<double>> values_;
   struct JetWorkspace;
   std::unique_ptr<JetWorkspace> jets_;

@@ -66,6 +66,8 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
     mz += p.z.back();
   }
   p.center_of_mass_height = mz / N;  // cells of equal mass
+  p.layer_bottom = U[GranularHydro1D::heightIndex(0)];
+  p.layer_top = U[GranularHydro1D::heightIndex(N)];
   return p;
 }
 

@@ -32,7 +32,7 @@ struct HydroRunOptions {
   double atol_scale = 1e-8;
   bool exact_jacobian = true;  // false: CVODE's difference quotients (for comparison)
   double initial_theta = 0;    // m^2/s^2 of the settled layer; 0 = 1e-3 g sigma
-  long max_steps_per_cycle = 4000;
+  long max_steps_per_cycle = 10000;
 };
 
 // What the layer does over the final window.
@@ -46,10 +46,11 @@ std::string regimeName(HydroRegime r);
 // Fields of one recorded phase, plate frame, one value per cell (cells follow the mass, so
 // their centres z move).
 struct HydroPhase {
-  double time = 0;                   // s (absolute)
-  double plate_height = 0;           // z_b(t), m
-  double plate_velocity = 0;         // dz_b/dt, m/s
-  double center_of_mass_height = 0;  // plate frame, m
+  double time = 0;                         // s (absolute)
+  double plate_height = 0;                 // z_b(t), m
+  double plate_velocity = 0;               // dz_b/dt, m/s
+  double center_of_mass_height = 0;        // plate frame, m
+  double layer_bottom = 0, layer_top = 0;  // the boundary nodes, plate frame, m
   std::vector<double> z, n, u, theta, area_fraction, pressure;
 };
 

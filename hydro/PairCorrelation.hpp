@@ -32,7 +32,7 @@
 
 namespace granwave::hydro {
 
-inline constexpr double kHexagonalClosePacking = std::numbers::pi / (2 * 1.7320508075688772);
+inline constexpr double kHexagonalClosePacking = std::numbers::pi / (2.0 * std::numbers::sqrt3);
 
 // Henderson g2(nu), 0 <= nu < 1.
 double pairCorrelation(double nu);

@@ -51,6 +51,17 @@ S smoothMax(const S& a, const S& b, double width) {
   return b + smoothPositivePart(S(a - b), width);
 }
 
+// max(x, floor) blended over [floor - width, floor + width] by a quadratic: exactly x above,
+// exactly floor below, continuous slope (C1) between. For floors that must not touch values
+// in the valid range.
+template <class S>
+S blendedMax(const S& x, double floor, double width) {
+  if (value(x) >= floor + width) return x;
+  if (value(x) <= floor - width) return constantLike(x, floor);
+  const S d = x - floor + width;
+  return floor + d * d / (4.0 * width);
+}
+
 // |x| smoothed over `width`.
 template <class S>
 S smoothAbs(const S& x, double width) {

@@ -25,13 +25,9 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
   const HydroGeometry& g = pde.geometry();
   const int N = g.cells;
   const double m_c = pde.cellMass();
-  // The operator's floors (GranularHydro1D.cpp, cellStates): the temperature it sees, and the
-  // packing map rho_eff(rho) = rho_max - d s((rho_max - rho)/d), inverted below.
-  const double theta_min = 1e-8 * g.gravity * m.sigma;
-  const double x = theta - theta_min;
-  const double theta_eff = theta_min + 0.5 * (x + std::sqrt(x * x + theta_min * theta_min));
+  // What the closures see (GranularHydro1D::cellView), inverted for the node spacing.
+  const double theta_eff = pde.effectiveTemperature(theta);
   const double rho_max = m.packingLimit() * m.mass / m.diskArea();
-  const double d = 1e-4 * m.mass / m.diskArea();
   auto pressure = [&](double rho_eff) { return m.pressure(rho_eff, theta_eff); };
 
   std::vector<double> U(pde.size(), 0.0);
@@ -44,11 +40,9 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
     const double stress = (N - i - 0.5) * m_c * g.gravity;
     const double rho_eff =
         solveIncreasing(pressure, stress, 1e-12 * rho_max, rho_max * (1 - 1e-15));
-    const double y = (rho_max - rho_eff) / d;  // s((rho_max - rho)/d) = y
-    const double rho = rho_max - d * (y - 1 / y);
     U[GranularHydro1D::heightIndex(i)] = z;
     U[GranularHydro1D::temperatureIndex(i)] = theta;
-    z += m_c / rho;
+    z += pde.spacingFor(rho_eff);
   }
   U[GranularHydro1D::heightIndex(N)] = z;
   if (z > g.height)

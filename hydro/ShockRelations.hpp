@@ -41,11 +41,11 @@
 // computed: the gas-dynamic relations are then outside their validity.
 #include <numbers>
 
+#include "hydro/PairCorrelation.hpp"
 #include "hydro/RestitutionClosure.hpp"
 
 namespace granwave::hydro {
 
-inline constexpr double kHexagonalClosePacking = std::numbers::pi / (2.0 * std::numbers::sqrt3);
 inline constexpr double kRandomClosePacking2D = 0.82;  // Torquato (1995), [R] in the design
 
 // A uniform state at rest: area fraction and theta (m^2/s^2).

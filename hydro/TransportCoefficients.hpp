@@ -123,8 +123,9 @@ Transport<S> garzoDufty(const DiskGas& gas, const S& rho, const S& theta, const 
   const S n = rho / gas.mass;
   const S nu = n * (kPi * gas.sigma * gas.sigma / 4.0);
   const S G = nu * g2;
-  // e_k^2 = max(1 - Phi_W, floor^2), smoothed over 0.005: positive, so sqrt is differentiable.
-  const S e = sqrt(smoothMax(S(1.0 - phi_w), constantLike(rho, f2), 0.005));
+  // e_k^2 = max(1 - Phi_W, floor^2), blended over +-0.05: positive, so sqrt is differentiable,
+  // and exactly 1 - Phi_W for e_eff >= 0.55.
+  const S e = sqrt(blendedMax(S(1.0 - phi_w), f2, 0.05));
   const S zeta_k = 0.5 * (1.0 - e * e) * g2;  // zeta* at e_k, inside the kinetic parts
   const S nu_eta = g2 * (7.0 - 3.0 * e) * (1.0 + e) / 8.0;
   const S eta_k = (1.0 - 0.25 * (1.0 + e) * (1.0 - 3.0 * e) * G) / (nu_eta - 0.5 * zeta_k);

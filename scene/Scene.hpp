@@ -71,7 +71,7 @@ struct RunSpec {
 };
 
 struct HydroSpec {
-  int cells = 400;
+  int cells = 100;  // Lagrangian cells of equal mass
   double rtol = 1e-4;  // CVODE relative tolerance
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;

@@ -20,22 +20,25 @@ namespace granwave {
 
 namespace {
 
-// Plate-frame profiles of one phase mapped onto the lab grid (NaN outside the container).
-void mapToLab(const hydro::HydroPhase& ph, double dz_plate, double height, const FieldGrid& grid,
+// Plate-frame profiles of one phase (cell centres z, moving with the mass) mapped onto the lab
+// grid: linear between cell centres, the outermost cells' values out to the layer's edges, and
+// no particles (NaN temperature and velocity) outside the layer or the container.
+void mapToLab(const hydro::HydroPhase& ph, double height, const FieldGrid& grid,
               double plate_velocity, double mass, std::vector<double>& nu, std::vector<double>& T,
               std::vector<double>& uz) {
-  const int N = static_cast<int>(ph.n.size());
+  const std::size_t N = ph.z.size();
   for (int j = 0; j < grid.nz; ++j) {
     const double zp = grid.zCentre(j) - ph.plate_height;  // z' above the plate
-    if (zp < 0 || zp > height) {
+    if (zp < ph.layer_bottom || zp > ph.layer_top || zp < 0 || zp > height) {
       nu.push_back(0.0);
       T.push_back(kNaN);
       uz.push_back(kNaN);
       continue;
     }
-    const double x = std::clamp(zp / dz_plate - 0.5, 0.0, N - 1.0);
-    const int i = std::min(static_cast<int>(x), N - 2);
-    const double w = x - i;
+    const auto above = std::upper_bound(ph.z.begin(), ph.z.end(), zp);
+    const std::size_t i =
+        std::min<std::size_t>(std::max<std::ptrdiff_t>(above - ph.z.begin(), 1) - 1, N - 2);
+    const double w = std::clamp((zp - ph.z[i]) / (ph.z[i + 1] - ph.z[i]), 0.0, 1.0);
     auto lerp = [&](const std::vector<double>& v) { return (1 - w) * v[i] + w * v[i + 1]; };
     nu.push_back(lerp(ph.area_fraction));
     T.push_back(mass * lerp(ph.theta));  // T = m theta, J: the ED's T_g
@@ -75,6 +78,8 @@ int runHydro(const HydroOptions& opt) {
                         ? hydro::TransportSet::GarzoDufty
                         : hydro::TransportSet::JenkinsRichman;
   model.knudsen_length = d;
+  model.contact.scale =
+      hydro::kHexagonalClosePacking * dv.mass / model.diskArea() * scene.run.gravity * d;
   if (scene.hydro.side_walls && !scene.container.periodic_x)
     model.side_wall_width = scene.container.width;
   hydro::HydroGeometry geom;
@@ -83,14 +88,16 @@ int runHydro(const HydroOptions& opt) {
   geom.gravity = scene.run.gravity;
   geom.amplitude = dv.amplitude;
   geom.omega = dv.omega;
-  const hydro::GranularHydro1D pde(geom, model);
+  geom.ramp_time = 2.0 / scene.drive.frequency;  // two cycles from the settled layer
+  const hydro::GranularHydro1D pde(geom, model,
+                                   scene.particles.count * dv.mass / scene.container.width);
   hydro::HydroRunOptions ro;
   ro.samples_per_cycle = scene.run.phases_per_cycle;
   ro.max_cycles =
       std::max(8, static_cast<int>(std::floor(scene.run.duration * scene.drive.frequency)));
   ro.cvode.rtol = scene.hydro.rtol;
   ro.atol_scale = scene.hydro.atol;
-  hydro::HydroSimulation sim(pde, scene.particles.count, scene.container.width, ro);
+  hydro::HydroSimulation sim(pde, ro);
   if (!opt.quiet)
     fmt::print(stderr, "  integrating up to {} cycles ({} cells)...\n", ro.max_cycles, geom.cells);
   const hydro::HydroResult r = sim.run();
@@ -105,8 +112,8 @@ int runHydro(const HydroOptions& opt) {
   std::vector<double> plate, com_lab, times;
   for (const hydro::HydroPhase& ph : r.window) {
     const double vb = dv.amplitude * dv.omega * std::cos(dv.omega * ph.time);
-    mapToLab(ph, pde.dz(), geom.height, grid, vb, dv.mass, lab.profile_area_fraction,
-             lab.profile_temperature, lab.profile_velocity_z);
+    mapToLab(ph, geom.height, grid, vb, dv.mass, lab.profile_area_fraction, lab.profile_temperature,
+             lab.profile_velocity_z);
     plate.push_back(ph.plate_height);
     com_lab.push_back(ph.center_of_mass_height + ph.plate_height);
     times.push_back(ph.time - r.window.front().time +
@@ -123,10 +130,10 @@ int runHydro(const HydroOptions& opt) {
     h5::AtomicFile af(out);
     h5::File& f = af.file();
     const std::size_t P = r.window.size(), N = static_cast<std::size_t>(geom.cells), Z = grid.nz;
-    std::vector<double> zp(N), zl(Z), n, u, T, nu, p;
-    for (std::size_t i = 0; i < N; ++i) zp[i] = pde.cellCentre(static_cast<int>(i));
+    std::vector<double> zp, zl(Z), n, u, T, nu, p;
     for (std::size_t j = 0; j < Z; ++j) zl[j] = grid.zCentre(static_cast<int>(j));
     for (const auto& ph : r.window) {
+      zp.insert(zp.end(), ph.z.begin(), ph.z.end());
       n.insert(n.end(), ph.n.begin(), ph.n.end());
       u.insert(u.end(), ph.u.begin(), ph.u.end());
       for (double th : ph.theta) T.push_back(dv.mass * th);
@@ -139,7 +146,7 @@ int runHydro(const HydroOptions& opt) {
       f.writeStringAttribute(path, "unit", unit);
     };
     f.createGroup("/plate_frame");
-    put("/plate_frame/z", zp, {N}, "m");
+    put("/plate_frame/z", zp, {P, N}, "m");
     put("/plate_frame/number_density", n, {P, N}, "m-2");
     put("/plate_frame/velocity_z", u, {P, N}, "m s-1");
     put("/plate_frame/temperature", T, {P, N}, "J");
@@ -182,6 +189,8 @@ int runHydro(const HydroOptions& opt) {
     f.writeAttribute<std::int64_t>(s, "cycles", r.cycles);
     f.writeAttribute<std::int64_t>(s, "period", r.period);
     f.writeAttribute<std::int64_t>(s, "periodic", r.periodic ? 1 : 0);
+    f.writeStringAttribute(s, "regime", hydro::regimeName(r.regime));
+    f.writeAttribute<double>(s, "cpu_seconds", r.cpu_seconds);
     f.writeAttribute<std::int64_t>(s, "steps", r.stats.steps);
     f.writeAttribute<std::int64_t>(s, "rhs_evals", r.stats.rhs_evals + r.stats.lin_rhs_evals);
     f.writeAttribute<std::int64_t>(s, "jacobian_evals", r.stats.jac_evals);
@@ -203,14 +212,13 @@ int runHydro(const HydroOptions& opt) {
   fmt::print("periodic state  {} after {} cycles; centre-of-mass period {}\n",
              r.periodic ? "reached" : "NOT reached", r.cycles,
              r.periodic ? fmt::format("{}T", r.period) : std::string("unknown"));
+  fmt::print("layer           {}\n", hydro::regimeName(r.regime));
   fmt::print(
-      "cost            {:.2f} s wall ({:.3f} s per cycle), {} steps, {} RHS evaluations, "
+      "cost            {:.2f} CPU-s ({:.3f} per cycle), {} steps, {} RHS evaluations, "
       "{} Jacobians, {} error-test and {} nonlinear failures\n",
-      r.wall_seconds, r.wall_seconds / r.cycles, r.stats.steps,
+      r.cpu_seconds, r.cpu_seconds / r.cycles, r.stats.steps,
       r.stats.rhs_evals + r.stats.lin_rhs_evals, r.stats.jac_evals, r.stats.err_test_fails,
       r.stats.nonlin_conv_fails);
-  fmt::print("mass            {:.9g} -> {:.9g} kg/m (relative change {:.1e})\n", r.initial_mass,
-             r.final_mass, std::abs(r.final_mass / r.initial_mass - 1));
   for (const FrontEpisode& e : fronts) {
     if (!e.from_impact) continue;
     fmt::print(

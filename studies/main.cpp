@@ -6,7 +6,7 @@
 #include <exception>
 #include <string>
 
-#include "hydro/CvodeIntegrator.hpp"
+#include "hydro/HydroSimulation.hpp"
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
@@ -66,7 +66,7 @@ int main(int argc, char** argv) {
   } catch (const granwave::SceneError& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return granwave::kExitInvalidInput;
-  } catch (const granwave::hydro::CvodeError& e) {
+  } catch (const granwave::hydro::HydroFailure& e) {
     fmt::print(stderr, "granwave: hydrodynamic solver: {}\n", e.what());
     return granwave::kExitSolverFailure;
   } catch (const granwave::InelasticCollapse& e) {
