@@ -13,6 +13,7 @@
 #include "hydro/ContactPressure.hpp"
 #include "hydro/PairCorrelation.hpp"
 #include "hydro/RestitutionClosure.hpp"
+#include "hydro/RoughCollisions.hpp"
 #include "hydro/TransportCoefficients.hpp"
 
 namespace granwave::hydro {
@@ -38,6 +39,7 @@ struct ConstitutiveModel {
   TransportSet transport = TransportSet::JenkinsRichman;
   PairCorrelation pair_correlation;  // g2(nu) and its close-packing limit
   ContactPressure contact;           // p_c(nu); scale 0 = none
+  RoughParticles rough;              // rotation as a field; disabled = smooth disks
   double knudsen_length = 0;         // l_max, m (0 = no limiter)
   double side_wall_width = 0;        // L_x, m, for the side-wall sink (0 = no side walls)
 

@@ -12,8 +12,6 @@ namespace {
 // Blocks of the stencil that reach one unknown: its own and two on each side. Columns of
 // blocks five apart never meet in a row, so 5 K colours give the whole band in one pass.
 constexpr int kBlockColours = 5;
-constexpr int kColours = kBlockColours * GranularHydro1D::kVars;
-using Jacobian = Jet<kColours>;
 
 double closePackedDensity(const ConstitutiveModel& m) {
   return kHexagonalClosePacking * m.mass / m.diskArea();
@@ -44,19 +42,23 @@ struct GranularHydro1D::Workspace {
         theta(cells),
         du(cells),
         stress(cells),
+        exchange(cells),
+        spin(cells),
         local(cells),
         heat(cells + 1) {}
-  // Per cell: density, length, temperature, velocity jump, normal stress Pi, closures.
-  std::vector<S> rho, length, theta, du, stress;
+  // Per cell: density, length, temperature, velocity jump, normal stress Pi, and for rough
+  // particles the collisional rates of theta (tangential part) and theta_r; closures.
+  std::vector<S> rho, length, theta, du, stress, exchange, spin;
   std::vector<LocalState<S>> local;
   // Heat flux through each node, upward (W/m).
   std::vector<S> heat;
 };
 
+template <int Colours>
 struct GranularHydro1D::JetWorkspace {
   explicit JetWorkspace(int cells, int n) : w(cells), U(n), dU(n) {}
-  Workspace<Jacobian> w;
-  std::vector<Jacobian> U, dU;
+  Workspace<Jet<Colours>> w;
+  std::vector<Jet<Colours>> U, dU;
 };
 
 GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model,
@@ -64,26 +66,33 @@ GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel
     : g_(g),
       model_(model),
       m_c_(column_mass / g.cells),
+      vars_(model.rough.enabled ? 4 : 3),
       reg_{model.packingLimit() * model.mass / model.diskArea(),
            1e-4 * model.mass / model.diskArea(),
            1e-6 * model.sigma,
            1e-8 * std::max(g.gravity, 1.0) * model.sigma,
            1e-4 * std::sqrt(std::max(g.gravity, 1.0) * model.sigma),
            closePackedDensity(model) * std::max(g.gravity, 1.0) * model.sigma},
-      values_(std::make_unique<Workspace<double>>(g.cells)),
-      jets_(std::make_unique<JetWorkspace>(g.cells, kVars * g.cells + 2)) {}
+      values_(std::make_unique<Workspace<double>>(g.cells)) {
+  if (rough())
+    rough_jets_ = std::make_unique<JetWorkspace<20>>(g.cells, size());
+  else
+    smooth_jets_ = std::make_unique<JetWorkspace<15>>(g.cells, size());
+}
 
 GranularHydro1D::~GranularHydro1D() = default;
 
 std::string GranularHydro1D::componentName(int k) const {
-  const int j = k / kVars;
-  switch (k % kVars) {
+  const int j = k / vars_;
+  switch (k % vars_) {
     case 0:
       return "node " + std::to_string(j) + ", height";
     case 1:
       return "node " + std::to_string(j) + ", velocity";
-    default:
+    case 2:
       return "cell " + std::to_string(j) + ", temperature";
+    default:
+      return "cell " + std::to_string(j) + ", rotational temperature";
   }
 }
 
@@ -107,28 +116,6 @@ EffectiveCell<S> effectiveCell(const R& reg, double m_c, const S& z0, const S& z
   const S gap = (reg.rho_max - m_c / length) / reg.packing_width;
   const S rho = reg.rho_max - reg.packing_width * 0.5 * (gap + sqrt(gap * gap + 4.0));
   return {rho, length, reg.theta_min + smoothPositivePart(S(theta - reg.theta_min), reg.theta_min)};
-}
-
-// Cells: density, temperature, closures, stress.
-template <class S, class W, class R>
-void cellStates(const ConstitutiveModel& model, const R& reg, int N, double m_c, const S* U, W& w) {
-  const double c2 = GranularHydro1D::kQuadraticViscosity, c1 = GranularHydro1D::kLinearViscosity;
-  for (int i = 0; i < N; ++i) {
-    const EffectiveCell<S> c = effectiveCell(reg, m_c, U[GranularHydro1D::heightIndex(i)],
-                                             U[GranularHydro1D::heightIndex(i + 1)],
-                                             U[GranularHydro1D::temperatureIndex(i)]);
-    w.rho[i] = c.rho;
-    w.length[i] = c.length;
-    w.theta[i] = c.theta;
-    w.local[i] = model.evaluate(c.rho, c.theta);
-    const S du = U[GranularHydro1D::velocityIndex(i + 1)] - U[GranularHydro1D::velocityIndex(i)];
-    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
-    // exactly 0 at du = 0, so a resting layer feels none.
-    const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg.u_width));
-    const S q = c.rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
-    w.du[i] = du;
-    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
-  }
 }
 
 // Heat fluxes through interior nodes, central in the temperature.
@@ -165,13 +152,40 @@ WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S
 
 }  // namespace
 
+// Cells: density, temperature, closures, stress, and the rough particles' exchange.
+template <class S>
+void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
+  const double c2 = kQuadraticViscosity, c1 = kLinearViscosity;
+  for (int i = 0; i < g_.cells; ++i) {
+    const EffectiveCell<S> c =
+        effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+    w.rho[i] = c.rho;
+    w.length[i] = c.length;
+    w.theta[i] = c.theta;
+    w.local[i] = model_.evaluate(c.rho, c.theta);
+    const S du = U[velocityIndex(i + 1)] - U[velocityIndex(i)];
+    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
+    // exactly 0 at du = 0, so a resting layer feels none.
+    const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg_.u_width));
+    const S q = c.rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
+    w.du[i] = du;
+    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
+    if (!rough()) continue;
+    const S& theta_r = U[rotationIndex(i)];
+    const S spin = reg_.theta_min + smoothPositivePart(S(theta_r - reg_.theta_min), reg_.theta_min);
+    const S nu = c.rho * (model_.diskArea() / model_.mass);
+    model_.rough.rates(nu, model_.pair_correlation.g2(nu), model_.restitution.phiP(c.theta),
+                       c.theta, spin, model_.sigma, w.exchange[i], w.spin[i]);
+  }
+}
+
 template <class S>
 int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) const {
   for (int k = 0; k < size(); ++k)
     if (!std::isfinite(value(U[k]))) return 1;
   const int N = g_.cells;
   const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
-  cellStates(model_, reg_, N, m_c_, U, w);
+  cellStates(U, w);
   heatFluxes<S>(N, w);
   const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
                                              w.rho[0], sigma, scale, u_width, 0.5 * m_c_);
@@ -200,6 +214,9 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
     if (i == 0) power += plate.heating;
     if (i == N - 1) power += lid.heating;
     dU[temperatureIndex(i)] = power / m_c_;
+    if (!rough()) continue;
+    dU[temperatureIndex(i)] += w.exchange[i];
+    dU[rotationIndex(i)] = w.spin[i];
   }
   for (int k = 0; k < size(); ++k)
     if (!std::isfinite(value(dU[k]))) return 1;
@@ -228,23 +245,29 @@ int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) cons
   return residual(t, U, dUdt, *values_);
 }
 
-int GranularHydro1D::jacobian(double t, const double* U, const BandWriter& write) const {
-  JetWorkspace& j = *jets_;
-  const int n = size();
+template <int Colours>
+int GranularHydro1D::jacobianWith(double t, const double* U, const BandWriter& write,
+                                  JetWorkspace<Colours>& j) const {
+  const int n = size(), K = vars_;
   for (int k = 0; k < n; ++k) {
-    const int colour = (k / kVars) % kBlockColours * kVars + k % kVars;
-    j.U[k] = Jacobian(U[k], kColours, colour);
+    const int colour = (k / K) % kBlockColours * K + k % K;
+    j.U[k] = Jet<Colours>(U[k], Colours, colour);
   }
   if (residual(t, j.U.data(), j.dU.data(), j.w) != 0) return 1;
   for (int k = 0; k < n; ++k)
     if (!j.dU[k].derivatives().allFinite()) return 1;
   for (int col = 0; col < n; ++col) {
-    const int block = col / kVars;
-    const int colour = block % kBlockColours * kVars + col % kVars;
-    const int first = std::max(0, (block - 2) * kVars), last = std::min(n, (block + 3) * kVars);
+    const int block = col / K;
+    const int colour = block % kBlockColours * K + col % K;
+    const int first = std::max(0, (block - 2) * K), last = std::min(n, (block + 3) * K);
     for (int row = first; row < last; ++row) write(row, col, j.dU[row].derivatives()[colour]);
   }
   return 0;
+}
+
+int GranularHydro1D::jacobian(double t, const double* U, const BandWriter& write) const {
+  return rough() ? jacobianWith(t, U, write, *rough_jets_)
+                 : jacobianWith(t, U, write, *smooth_jets_);
 }
 
 }  // namespace granwave::hydro

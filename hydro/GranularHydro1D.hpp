@@ -28,9 +28,13 @@
 // physical viscosity's, heats the cell. The contact pressure p_c is elastic: it enters the
 // stress, not the temperature equation.
 //
-// Unknowns interleaved per block j = [z_j, u_j, theta_j] (the last block, j = N, holds only
-// z_N, u_N), so the Jacobian is banded (half-bandwidth kHalfBand) and computed exactly by
-// forward-mode differentiation of the same code (hydro/Scalar.hpp).
+// Rough particles (ConstitutiveModel::rough) add the rotational temperature theta_r of each
+// cell, changed only by collisions (hydro/RoughCollisions.hpp; its transport is neglected).
+//
+// Unknowns interleaved per block j = [z_j, u_j, theta_j (, theta_r,j)] (the last block,
+// j = N, holds only z_N, u_N), so the Jacobian is banded (half-bandwidth 3 K - 1 for K
+// unknowns per block) and computed exactly by forward-mode differentiation of the same code
+// (hydro/Scalar.hpp).
 #include <functional>
 #include <memory>
 #include <string>
@@ -59,8 +63,6 @@ using BandWriter = std::function<void(int row, int column, double value)>;
 
 class GranularHydro1D {
  public:
-  static constexpr int kVars = 3;  // z, u, theta per block
-  static constexpr int kHalfBand = 3 * kVars - 1;
   // Artificial viscosity q = rho (c2 du^2 + c1 c_s |du|) in compression (Caramana, Shashkov
   // & Whalen, J. Comput. Phys. 144, 70 (1998), the 1D forms).
   static constexpr double kQuadraticViscosity = 1.0, kLinearViscosity = 0.2;
@@ -78,7 +80,11 @@ class GranularHydro1D {
   GranularHydro1D& operator=(const GranularHydro1D&) = delete;
 
   int cells() const { return g_.cells; }
-  int size() const { return kVars * g_.cells + 2; }
+  // Unknowns per block: 3 (z, u, theta), 4 with the rotational temperature.
+  int variables() const { return vars_; }
+  int size() const { return vars_ * g_.cells + 2; }
+  int halfBand() const { return 3 * vars_ - 1; }
+  bool rough() const { return vars_ == 4; }
   double cellMass() const { return m_c_; }
   double columnMass() const { return m_c_ * g_.cells; }
   const HydroGeometry& geometry() const { return g_; }
@@ -86,9 +92,10 @@ class GranularHydro1D {
   double effectiveGravity(double t) const { return g_.gravity + g_.plateAcceleration(t); }
 
   // Where the unknowns sit in the state vector.
-  static int heightIndex(int node) { return kVars * node; }
-  static int velocityIndex(int node) { return kVars * node + 1; }
-  static int temperatureIndex(int cell) { return kVars * cell + 2; }
+  int heightIndex(int node) const { return vars_ * node; }
+  int velocityIndex(int node) const { return vars_ * node + 1; }
+  int temperatureIndex(int cell) const { return vars_ * cell + 2; }
+  int rotationIndex(int cell) const { return vars_ * cell + 3; }  // rough particles only
 
   // The stress of the wall contact at a gap (m) from the wall, approached at `speed` (m/s,
   // > 0 towards the wall), for a wall cell of density rho and sound speed c: the elastic part
@@ -127,6 +134,13 @@ class GranularHydro1D {
   struct Workspace;
   template <class S>
   int residual(double t, const S* U, S* dUdt, Workspace<S>& w) const;
+  template <class S>
+  void cellStates(const S* U, Workspace<S>& w) const;
+  template <int Colours>
+  struct JetWorkspace;
+  template <int Colours>
+  int jacobianWith(double t, const double* U, const BandWriter& write,
+                   JetWorkspace<Colours>& j) const;
 
   // Scales of the regularisations above, fixed at construction.
   struct Regularisation {
@@ -135,10 +149,11 @@ class GranularHydro1D {
   HydroGeometry g_;
   ConstitutiveModel model_;
   double m_c_;
+  int vars_;
   Regularisation reg_;
   std::unique_ptr<Workspace<double>> values_;
-  struct JetWorkspace;
-  std::unique_ptr<JetWorkspace> jets_;
+  std::unique_ptr<JetWorkspace<15>> smooth_jets_;  // 5 block colours x 3 unknowns
+  std::unique_ptr<JetWorkspace<20>> rough_jets_;   // 5 block colours x 4 unknowns
 };
 
 }  // namespace granwave::hydro

@@ -51,23 +51,22 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
   p.plate_velocity = pde_.geometry().plateVelocity(t);
   double mz = 0;
   for (int i = 0; i < N; ++i) {
-    const double z0 = U[GranularHydro1D::heightIndex(i)],
-                 z1 = U[GranularHydro1D::heightIndex(i + 1)];
+    const double z0 = U[pde_.heightIndex(i)], z1 = U[pde_.heightIndex(i + 1)];
     const double rho = m_c / (z1 - z0);
-    const double theta = std::max(U[GranularHydro1D::temperatureIndex(i)], 0.0);
+    const double theta = std::max(U[pde_.temperatureIndex(i)], 0.0);
     p.z.push_back(0.5 * (z0 + z1));
     p.n.push_back(rho / m.mass);
-    p.u.push_back(
-        0.5 * (U[GranularHydro1D::velocityIndex(i)] + U[GranularHydro1D::velocityIndex(i + 1)]));
+    p.u.push_back(0.5 * (U[pde_.velocityIndex(i)] + U[pde_.velocityIndex(i + 1)]));
     p.theta.push_back(theta);
+    if (pde_.rough()) p.rotation.push_back(std::max(U[pde_.rotationIndex(i)], 0.0));
     p.area_fraction.push_back(m.areaFraction(rho));
     p.pressure.push_back(
         m.pressure(std::min(rho, 0.999999 * m.packingLimit() * m.mass / m.diskArea()), theta));
     mz += p.z.back();
   }
   p.center_of_mass_height = mz / N;  // cells of equal mass
-  p.layer_bottom = U[GranularHydro1D::heightIndex(0)];
-  p.layer_top = U[GranularHydro1D::heightIndex(N)];
+  p.layer_bottom = U[pde_.heightIndex(0)];
+  p.layer_top = U[pde_.heightIndex(N)];
   return p;
 }
 
@@ -80,15 +79,19 @@ CvodeOptions HydroSimulation::solverOptions() const {
     const double a = opt_.atol_scale;
     co.atol.assign(pde_.size(), 0.0);
     for (int j = 0; j <= N; ++j) {
-      co.atol[GranularHydro1D::heightIndex(j)] = 100 * a * sigma;
-      co.atol[GranularHydro1D::velocityIndex(j)] = 100 * a * std::sqrt(g.gravity * sigma);
-      if (j < N) co.atol[GranularHydro1D::temperatureIndex(j)] = a * g.gravity * sigma;
+      co.atol[pde_.heightIndex(j)] = 100 * a * sigma;
+      co.atol[pde_.velocityIndex(j)] = 100 * a * std::sqrt(g.gravity * sigma);
+      if (j < N) co.atol[pde_.temperatureIndex(j)] = a * g.gravity * sigma;
+      if (j < N && pde_.rough()) co.atol[pde_.rotationIndex(j)] = a * g.gravity * sigma;
     }
   }
-  if (co.band_upper == 0) co.band_upper = co.band_lower = GranularHydro1D::kHalfBand;
+  if (co.band_upper == 0) co.band_upper = co.band_lower = pde_.halfBand();
   if (co.constraints.empty()) {  // theta > 0 (CVODE semantics 2.0); heights, velocities free
     co.constraints.assign(pde_.size(), 0.0);
-    for (int i = 0; i < N; ++i) co.constraints[GranularHydro1D::temperatureIndex(i)] = 2.0;
+    for (int i = 0; i < N; ++i) {
+      co.constraints[pde_.temperatureIndex(i)] = 2.0;
+      if (pde_.rough()) co.constraints[pde_.rotationIndex(i)] = 2.0;
+    }
   }
   const double T = 2 * std::numbers::pi / g.omega;
   if (co.max_step == 0) co.max_step = T / (2 * opt_.samples_per_cycle);

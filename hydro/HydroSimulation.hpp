@@ -52,6 +52,7 @@ struct HydroPhase {
   double center_of_mass_height = 0;        // plate frame, m
   double layer_bottom = 0, layer_top = 0;  // the boundary nodes, plate frame, m
   std::vector<double> z, n, u, theta, area_fraction, pressure;
+  std::vector<double> rotation;  // theta_r, m^2/s^2 (rough particles; empty otherwise)
 };
 
 struct HydroResult {

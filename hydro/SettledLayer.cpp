@@ -40,11 +40,12 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
     const double stress = (N - i - 0.5) * m_c * g.gravity;
     const double rho_eff =
         solveIncreasing(pressure, stress, 1e-12 * rho_max, rho_max * (1 - 1e-15));
-    U[GranularHydro1D::heightIndex(i)] = z;
-    U[GranularHydro1D::temperatureIndex(i)] = theta;
+    U[pde.heightIndex(i)] = z;
+    U[pde.temperatureIndex(i)] = theta;
+    if (pde.rough()) U[pde.rotationIndex(i)] = theta;  // equipartition at rest
     z += pde.spacingFor(rho_eff);
   }
-  U[GranularHydro1D::heightIndex(N)] = z;
+  U[pde.heightIndex(N)] = z;
   if (z > g.height)
     throw std::invalid_argument("the settled layer (" + std::to_string(z) +
                                 " m) does not fit under the lid (" + std::to_string(g.height) +

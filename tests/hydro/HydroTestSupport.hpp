@@ -52,8 +52,9 @@ inline Column uniformGas(const ConstitutiveModel& m, int cells, double height, d
   auto place = [&](double gap) {
     const double length = (height - 2 * gap) / cells;
     for (int j = 0; j <= cells; ++j) {
-      c.U[GranularHydro1D::heightIndex(j)] = gap + j * length;
-      if (j < cells) c.U[GranularHydro1D::temperatureIndex(j)] = theta;
+      c.U[c.pde->heightIndex(j)] = gap + j * length;
+      if (j < cells) c.U[c.pde->temperatureIndex(j)] = theta;
+      if (j < cells && c.pde->rough()) c.U[c.pde->rotationIndex(j)] = theta;
     }
   };
   double gap = 0;
@@ -78,11 +79,12 @@ inline CvodeIntegrator integrator(const GranularHydro1D& pde, const std::vector<
   o.rtol = rtol;
   o.atol.assign(U.size(), 0.0);
   for (int j = 0; j <= pde.cells(); ++j) {
-    o.atol[GranularHydro1D::heightIndex(j)] = 1e-12;
-    o.atol[GranularHydro1D::velocityIndex(j)] = 1e-12;
-    if (j < pde.cells()) o.atol[GranularHydro1D::temperatureIndex(j)] = 1e-14;
+    o.atol[pde.heightIndex(j)] = 1e-12;
+    o.atol[pde.velocityIndex(j)] = 1e-12;
+    if (j < pde.cells()) o.atol[pde.temperatureIndex(j)] = 1e-14;
+    if (j < pde.cells() && pde.rough()) o.atol[pde.rotationIndex(j)] = 1e-14;
   }
-  o.band_upper = o.band_lower = GranularHydro1D::kHalfBand;
+  o.band_upper = o.band_lower = pde.halfBand();
   o.max_steps = 200000;
   o.jacobian = [&pde](double t, const double* y, const BandMatrixWriter& w) {
     return pde.jacobian(t, y, w);
@@ -94,11 +96,10 @@ inline CvodeIntegrator integrator(const GranularHydro1D& pde, const std::vector<
 
 // Density and temperature of cell i of a state.
 inline double cellDensity(const GranularHydro1D& pde, const std::vector<double>& U, int i) {
-  return pde.cellMass() /
-         (U[GranularHydro1D::heightIndex(i + 1)] - U[GranularHydro1D::heightIndex(i)]);
+  return pde.cellMass() / (U[pde.heightIndex(i + 1)] - U[pde.heightIndex(i)]);
 }
-inline double cellCentre(const std::vector<double>& U, int i) {
-  return 0.5 * (U[GranularHydro1D::heightIndex(i)] + U[GranularHydro1D::heightIndex(i + 1)]);
+inline double cellCentre(const GranularHydro1D& pde, const std::vector<double>& U, int i) {
+  return 0.5 * (U[pde.heightIndex(i)] + U[pde.heightIndex(i + 1)]);
 }
 
 }  // namespace granwave::hydro::test

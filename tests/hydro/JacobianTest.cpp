@@ -33,11 +33,11 @@ void expectJacobianMatchesFiniteDifferences(TransportSet transport) {
   std::vector<double> U(n);
   double z = 0.02 * kD;  // the bottom node inside the plate's contact range
   for (int j = 0; j <= N; ++j) {
-    U[GranularHydro1D::heightIndex(j)] = z;
-    U[GranularHydro1D::velocityIndex(j)] = 0.5 * (U01(rng) - 0.5);
+    U[pde.heightIndex(j)] = z;
+    U[pde.velocityIndex(j)] = 0.5 * (U01(rng) - 0.5);
     if (j == N) break;
     const double nu = j < 6 ? 0.6 + 0.25 * U01(rng) : 0.02 + 0.5 * U01(rng);
-    U[GranularHydro1D::temperatureIndex(j)] = 0.05 * (0.01 + U01(rng));
+    U[pde.temperatureIndex(j)] = 0.05 * (0.01 + U01(rng));
     z += pde.cellMass() / test::densityOf(nu);
   }
   std::vector<double> J(static_cast<std::size_t>(n) * n, 0.0);

@@ -42,9 +42,8 @@ Errors truncationError(int cells) {
   const GranularHydro1D pde(g, m, M);
   std::vector<double> U(pde.size(), 0.0), R(pde.size());
   for (int j = 0; j <= cells; ++j) {
-    U[GranularHydro1D::heightIndex(j)] = heightOfMass(M * j / cells);
-    if (j < cells)
-      U[GranularHydro1D::temperatureIndex(j)] = thetaStar(heightOfMass(M * (j + 0.5) / cells));
+    U[pde.heightIndex(j)] = heightOfMass(M * j / cells);
+    if (j < cells) U[pde.temperatureIndex(j)] = thetaStar(heightOfMass(M * (j + 0.5) / cells));
   }
   EXPECT_EQ(pde.rightHandSide(0.0, U.data(), R.data()), 0);
   const double dz = 1e-5 * kL;
@@ -55,14 +54,14 @@ Errors truncationError(int cells) {
   Errors e{0, 0};
   double scale_m = 0, scale_e = 0;
   for (int i = 6; i + 6 < cells; ++i) {
-    const double zn = U[GranularHydro1D::heightIndex(i)];
+    const double zn = U[pde.heightIndex(i)];
     const double exact_m = -(p(zn + dz) - p(zn - dz)) / (2 * dz) / rhoStar(zn) - g.gravity;
     const double zc = heightOfMass(M * (i + 0.5) / cells);
     const double exact_e = ((heat(zc + dz) - heat(zc - dz)) / (2 * dz) -
                             m.evaluate(rhoStar(zc), thetaStar(zc)).cooling) /
                            rhoStar(zc);
-    e.momentum = std::max(e.momentum, std::abs(R[GranularHydro1D::velocityIndex(i)] - exact_m));
-    e.energy = std::max(e.energy, std::abs(R[GranularHydro1D::temperatureIndex(i)] - exact_e));
+    e.momentum = std::max(e.momentum, std::abs(R[pde.velocityIndex(i)] - exact_m));
+    e.energy = std::max(e.energy, std::abs(R[pde.temperatureIndex(i)] - exact_e));
     scale_m = std::max(scale_m, std::abs(exact_m) + g.gravity);
     scale_e = std::max(scale_e, std::abs(exact_e));
   }

@@ -60,7 +60,7 @@ double hydrostaticError(const Layer& l, double theta, int& unresolved) {
   const int steps = 100 * N;
   const double h = M / steps;
   std::vector<double> zc(steps + 1);
-  zc[0] = l.U[GranularHydro1D::heightIndex(0)];
+  zc[0] = l.U[l.pde->heightIndex(0)];
   for (int k = 0; k < steps; ++k) {  // RK4 in M (the top, p = 0, is the last half step)
     const double a = k * h;
     const double k1 = dzdM(a), k2 = dzdM(a + 0.5 * h), k3 = k2,
@@ -70,15 +70,14 @@ double hydrostaticError(const Layer& l, double theta, int& unresolved) {
   double worst = 0;
   unresolved = 0;
   for (int i = 0; i < N; ++i) {
-    const double length =
-        l.U[GranularHydro1D::heightIndex(i + 1)] - l.U[GranularHydro1D::heightIndex(i)];
+    const double length = l.U[l.pde->heightIndex(i + 1)] - l.U[l.pde->heightIndex(i)];
     const GranularHydro1D::CellView v = pde.cellView(l.U.data(), i);
     const double scale_height = m.evaluate(v.rho, v.theta).isothermal_speed2 / g;
     if (length > scale_height / 3) {
       ++unresolved;
       continue;
     }
-    const double z = test::cellCentre(l.U, i);
+    const double z = test::cellCentre(*l.pde, l.U, i);
     const auto above = std::upper_bound(zc.begin(), zc.end(), z);
     const std::size_t k =
         std::clamp<std::size_t>(static_cast<std::size_t>(above - zc.begin()), 1, zc.size() - 1);
@@ -93,7 +92,7 @@ void expectAtRest(const Layer& l) {
   std::vector<double> R(l.U.size());
   ASSERT_EQ(l.pde->rightHandSide(0.0, l.U.data(), R.data()), 0);
   for (int j = 0; j <= l.pde->cells(); ++j)
-    EXPECT_LT(std::abs(R[GranularHydro1D::velocityIndex(j)]), 1e-9 * 9.81) << "node " << j;
+    EXPECT_LT(std::abs(R[l.pde->velocityIndex(j)]), 1e-9 * 9.81) << "node " << j;
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ TEST(HydroWaves, GasHittingThePlateMakesTheRankineHugoniotShock) {
   const double nu1 = 0.3, theta1 = 1e-4, Up = 0.4;
   const int N = 600;
   test::Column c = test::uniformGas(elastic(), N, 0.06, nu1, theta1);
-  for (int j = 0; j <= N; ++j) c.U[GranularHydro1D::velocityIndex(j)] = -Up;
+  for (int j = 0; j <= N; ++j) c.U[c.pde->velocityIndex(j)] = -Up;
   const ShockSolution rh = rankineHugoniot({nu1, theta1}, Up, RestitutionClosure::constant(1.0));
   CvodeIntegrator cv = test::integrator(*c.pde, c.U, 1e-6);
   const double half = test::densityOf(0.5 * (rh.nu + nu1));
@@ -40,7 +40,7 @@ TEST(HydroWaves, GasHittingThePlateMakesTheRankineHugoniotShock) {
     for (int i = 0; i + 1 < N; ++i) {
       const double a = test::cellDensity(*c.pde, V, i), b = test::cellDensity(*c.pde, V, i + 1);
       if (a >= half && b < half) {
-        const double za = test::cellCentre(V, i), zb = test::cellCentre(V, i + 1);
+        const double za = test::cellCentre(*c.pde, V, i), zb = test::cellCentre(*c.pde, V, i + 1);
         return za + (zb - za) * (a - half) / (a - b);
       }
     }
@@ -58,8 +58,8 @@ TEST(HydroWaves, GasHittingThePlateMakesTheRankineHugoniotShock) {
       << "shock speed in the plate frame; Rankine-Hugoniot s = " << rh.speed << " m/s";
   const auto& V = cv.state();
   int plateau = 0;
-  while (test::cellCentre(V, plateau) < 0.5 * z2) ++plateau;
-  EXPECT_NEAR(V[GranularHydro1D::temperatureIndex(plateau)], rh.theta, 0.03 * rh.theta);
+  while (test::cellCentre(*c.pde, V, plateau) < 0.5 * z2) ++plateau;
+  EXPECT_NEAR(V[c.pde->temperatureIndex(plateau)], rh.theta, 0.03 * rh.theta);
   EXPECT_NEAR(elastic().areaFraction(test::cellDensity(*c.pde, V, plateau)), rh.nu, 0.03 * rh.nu);
 }
 
@@ -82,13 +82,13 @@ TEST(HydroWaves, SmallPulseTravelsAtTheAdiabaticSoundSpeed) {
   // shortens the column by 0.02 sigma, so the top node leaves its contact balance and sends
   // a small wave down from the lid; the peak is looked for within 3 widths of where it
   // should be, which that wave does not reach in the time of the test.
-  double z = c.U[GranularHydro1D::heightIndex(0)];
+  double z = c.U[c.pde->heightIndex(0)];
   for (int j = 0; j <= N; ++j) {
     const double b = 1e-3 * std::exp(-std::pow((z - z0) / w, 2));
-    c.U[GranularHydro1D::heightIndex(j)] = z;
-    c.U[GranularHydro1D::velocityIndex(j)] = cs * b;
+    c.U[c.pde->heightIndex(j)] = z;
+    c.U[c.pde->velocityIndex(j)] = cs * b;
     if (j == N) break;
-    c.U[GranularHydro1D::temperatureIndex(j)] = theta + p0 / rho * b;
+    c.U[c.pde->temperatureIndex(j)] = theta + p0 / rho * b;
     z += c.pde->spacingFor(rho * (1 + b));
   }
   CvodeIntegrator cv = test::integrator(*c.pde, c.U, 1e-7);
@@ -96,14 +96,14 @@ TEST(HydroWaves, SmallPulseTravelsAtTheAdiabaticSoundSpeed) {
     const auto& V = cv.state();
     int best = -1;
     for (int i = 1; i + 1 < N; ++i) {
-      if (std::abs(test::cellCentre(V, i) - expected) > 3 * w) continue;
+      if (std::abs(test::cellCentre(*c.pde, V, i) - expected) > 3 * w) continue;
       if (best < 0 || test::cellDensity(*c.pde, V, i) > test::cellDensity(*c.pde, V, best))
         best = i;
     }
     const double a = test::cellDensity(*c.pde, V, best - 1), b = test::cellDensity(*c.pde, V, best),
                  d = test::cellDensity(*c.pde, V, best + 1);
     const double shift = 0.5 * (a - d) / (a - 2 * b + d);  // parabola through three cells
-    const double za = test::cellCentre(V, best), zb = test::cellCentre(V, best + 1);
+    const double za = test::cellCentre(*c.pde, V, best), zb = test::cellCentre(*c.pde, V, best + 1);
     return za + shift * (zb - za);
   };
   const double t = 0.12 / cs;
