@@ -1,6 +1,6 @@
 #pragma once
 // Maxwell-averaged restitution closures for velocity-dependent normal restitution
-// (physics-hydro.md 4.2-4.4; local-Maxwellian, leading-Sonine closure).
+// (docs/hydro.md, "Closures"; local-Maxwellian, leading-Sonine closure).
 //
 // For a Maxwellian at temperature T = m theta, the collision-rate-weighted distribution of the
 // normal impact speed u of a colliding pair is P(u) ~ u exp(-u^2/(4 theta)) in every d, and a

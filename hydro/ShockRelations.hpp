@@ -1,5 +1,5 @@
 #pragma once
-// Rankine-Hugoniot relations for a granular gas of disks, d = 2 (physics-hydro.md 3.2),
+// Rankine-Hugoniot relations for a granular gas of disks, d = 2 (docs/hydro.md, "Theory helpers"),
 // dissipation inside the shock neglected. Upstream state 1 at rest, a piston (the plate)
 // driving the gas at speed U_p > 0 into it, shock speed s in the upstream frame:
 //
@@ -46,7 +46,8 @@
 
 namespace granwave::hydro {
 
-inline constexpr double kRandomClosePacking2D = 0.82;  // Torquato (1995), [R] in the design
+inline constexpr double kRandomClosePacking2D =
+    0.82;  // random close packing of disks (Torquato, PRE 51, 3170 (1995))
 
 // A uniform state at rest: area fraction and theta (m^2/s^2).
 struct GasState {

@@ -1,5 +1,5 @@
 #pragma once
-// Sound speeds of the granular gas of disks, d = 2 (physics-hydro.md 3.1).
+// Sound speeds of the granular gas of disks, d = 2 (docs/hydro.md, "Theory helpers").
 //
 // Equation of state p = n T F(nu, theta), with the compressibility factor
 //

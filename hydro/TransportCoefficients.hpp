@@ -1,13 +1,13 @@
 #pragma once
 // Navier-Stokes transport coefficients of smooth inelastic hard disks, d = 2
-// (physics-hydro.md 1.3-1.5, 4.6). Units (2D, per unit length of the layer's width):
+// (docs/hydro.md, "Closures"). Units (2D, per unit length of the layer's width):
 //
 //   p            pressure,                         N/m = kg/s^2
 //   eta          shear viscosity,                  kg/s
 //   lambda_b     bulk viscosity,                   kg/s
 //   kappa_theta  heat conductivity for theta:      kg/s, heat flux q = -kappa_theta d(theta)/dz
 //                in W/m. kappa_theta = m kappa_T, where kappa_T (1/s) is the conductivity for
-//                T = m theta in the design's q = -kappa grad T; kappa_theta = 4 eta0 kappa*.
+//                T = m theta in q = -kappa grad T; kappa_theta = 4 eta0 kappa*.
 //   D_c          collisional energy loss rate,      W/m^2 = kg/s^3
 //
 // with rho = m n, nu = n pi sigma^2/4, G = nu g2(nu) (Henderson), theta = T/m and the reference

@@ -14,6 +14,8 @@ enum class RestitutionKind { Constant, Dry, Wet };
 enum class InitialPlacement { Random, Lattice };
 enum class HydroRestitutionModel { Constant, Velocity };
 enum class HydroTransport { JenkinsRichman, GarzoDufty };
+enum class HydroPairCorrelation { Luding, Henderson };
+enum class HydroParticles { Smooth, Rough };
 
 struct ParticlesSpec {
   int count = 300;
@@ -71,12 +73,15 @@ struct RunSpec {
 };
 
 struct HydroSpec {
-  int cells = 100;  // Lagrangian cells of equal mass
+  int cells = 100;     // Lagrangian cells of equal mass
   double rtol = 1e-4;  // CVODE relative tolerance
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;
   HydroTransport transport = HydroTransport::JenkinsRichman;
   bool side_walls = false;  // side-wall dissipation as a volumetric sink (x not periodic)
+  HydroPairCorrelation pair_correlation = HydroPairCorrelation::Luding;
+  double contact_pressure = 1.0;  // scale of the contact pressure in rho_cp g sigma (0 = none)
+  HydroParticles particles = HydroParticles::Smooth;  // rough: rotation as a field
 };
 
 struct Scene {

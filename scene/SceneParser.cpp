@@ -122,6 +122,16 @@ void readHydroTransport(Scene& s, const Entry& e) {
       e.choice<T>({{"jenkins-richman", T::JenkinsRichman}, {"garzo-dufty", T::GarzoDufty}});
 }
 
+void readHydroPairCorrelation(Scene& s, const Entry& e) {
+  using G = HydroPairCorrelation;
+  s.hydro.pair_correlation = e.choice<G>({{"luding", G::Luding}, {"henderson", G::Henderson}});
+}
+
+void readHydroParticles(Scene& s, const Entry& e) {
+  using P = HydroParticles;
+  s.hydro.particles = e.choice<P>({{"smooth", P::Smooth}, {"rough", P::Rough}});
+}
+
 void readSeed(Scene& s, const Entry& e) { s.run.seed = e.integer<std::int64_t>(0); }
 
 // Readers of plain fields, given as (section member, field member) pointers.
@@ -191,6 +201,9 @@ const Field kFields[] = {
     {"hydro", "restitution_model", readHydroModel},
     {"hydro", "transport", readHydroTransport},
     {"hydro", "side_walls", boolean<kH, &HydroSpec::side_walls>},
+    {"hydro", "pair_correlation", readHydroPairCorrelation},
+    {"hydro", "contact_pressure", number<kH, &HydroSpec::contact_pressure>},
+    {"hydro", "particles", readHydroParticles},
 };
 
 const Field* findField(std::string_view section, std::string_view name) {

@@ -104,6 +104,7 @@ void Checker::singleKeys() const {
   atLeast("hydro.cells", s_.hydro.cells, 8);
   positive("hydro.rtol", s_.hydro.rtol, "relative tolerance");
   positive("hydro.atol", s_.hydro.atol, "absolute tolerance");
+  within("hydro.contact_pressure", s_.hydro.contact_pressure, '[', 0.0, 1e6, ']');
 }
 
 void Checker::drive() const {

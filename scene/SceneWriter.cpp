@@ -141,6 +141,11 @@ std::string sceneToToml(const Scene& s) {
   w.key("side_walls", s.hydro.side_walls);
   w.key("transport", quoted(s.hydro.transport == HydroTransport::GarzoDufty ? "garzo-dufty"
                                                                             : "jenkins-richman"));
+  w.key(
+      "pair_correlation",
+      quoted(s.hydro.pair_correlation == HydroPairCorrelation::Henderson ? "henderson" : "luding"));
+  w.key("contact_pressure", s.hydro.contact_pressure);
+  w.key("particles", quoted(s.hydro.particles == HydroParticles::Rough ? "rough" : "smooth"));
   return w.take();
 }
 

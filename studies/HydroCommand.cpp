@@ -203,8 +203,10 @@ int runHydro(const HydroOptions& opt) {
 
   fmt::print("scene           {}\n", opt.scene_path);
   fmt::print(
-      "hydro           {} cells, {} transport, restitution {}, rtol {:g}\n", geom.cells,
+      "hydro           {} cells, {} transport, {} particles, restitution {}, rtol {:g}\n",
+      geom.cells,
       scene.hydro.transport == HydroTransport::GarzoDufty ? "Garzo-Dufty" : "Jenkins-Richman",
+      scene.hydro.particles == HydroParticles::Rough ? "rough" : "smooth",
       scene.hydro.restitution_model == HydroRestitutionModel::Constant
           ? "constant"
           : "velocity-dependent (Maxwell-averaged)",

@@ -1,6 +1,7 @@
-// Pair correlation and Maxwell-averaged restitution closures (physics-hydro.md 1.2, 4.2-4.5):
+// Pair correlation and Maxwell-averaged restitution closures (docs/hydro.md, "Closures"):
 // closed forms against direct quadrature of the defining integrals, their limits, their
-// analytic theta-derivatives against central differences, and the table of 4.5.
+// analytic theta-derivatives against central differences, and the table of docs/hydro.md,
+// "Reference values".
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,7 +21,8 @@ using granwave::hydro::RestitutionClosure;
 
 namespace {
 
-// The paper's laws (physics-hydro.md 4.5): kappa = 0.1, e_inf = 0.91, v_c = 0.0698 m/s.
+// The paper's laws (docs/hydro.md, "Reference values"): kappa = 0.1, e_inf = 0.91, v_c = 0.0698
+// m/s.
 const RestitutionClosure kConstant = RestitutionClosure::constant(0.9);
 const RestitutionClosure kDry = RestitutionClosure::dry(0.1);
 const RestitutionClosure kWet = RestitutionClosure::wet(0.91, 0.0698);
@@ -44,7 +46,7 @@ TEST(PairCorrelation, HendersonValues) {
   EXPECT_DOUBLE_EQ(pairCorrelation(0.0), 1.0);
   EXPECT_NEAR(pairCorrelation(0.5), 3.125, 1e-15);  // (1 - 7/32) / (1/4)
   // At hexagonal close packing pi / (2 sqrt 3) = 0.906900: g2 = 0.603231 / 0.0931003^2 =
-  // 69.596. The design (1.2) prints 69.5 (truncated); rounded it is 69.6.
+  // 69.596. Rounded it is 69.6.
   const double hcp = std::numbers::pi / (2.0 * std::numbers::sqrt3);
   expectPrinted(pairCorrelation(hcp), 69.6, 0.1);
 }
@@ -68,7 +70,7 @@ TEST(PairCorrelation, DerivativeMatchesCentralDifference) {
 TEST(RestitutionClosure, PointwiseLaws) {
   EXPECT_DOUBLE_EQ(kConstant.coefficient(3.0), 0.9);
   EXPECT_NEAR(kDry.coefficient(1.0), 0.9, 1e-15);
-  EXPECT_NEAR(kDry.coefficient(0.6), 0.9097, 1e-4);  // design 4.1: e(0.6 m/s) = 0.91
+  EXPECT_NEAR(kDry.coefficient(0.6), 0.9097, 1e-4);  // the paper's e_dry(0.6 m/s) = 0.91
   EXPECT_DOUBLE_EQ(kWet.coefficient(0.05), 0.0);
   EXPECT_NEAR(kWet.coefficient(1.0), 0.91 * (1.0 - 0.0698), 1e-15);
 }
@@ -122,9 +124,9 @@ TEST(RestitutionClosure, QuadratureIsFarMoreAccurateThanTheTestTolerance) {
 }
 
 TEST(RestitutionClosure, DryClosedFormGammaValues) {
-  // Design 4.3: Gamma(21/10) = 1.04649, Gamma(11/5) = 1.10180, Gamma(8/5)/Gamma(3/2) = 1.00823.
-  // The last is 0.8935153 / 0.8862269 = 1.0082241, i.e. 1.00822 (the design's last digit is
-  // off by one; the closed forms and the table use the exact value).
+  // docs/hydro.md ("Closures"): Gamma(21/10) = 1.04649, Gamma(11/5) = 1.10180,
+  // Gamma(8/5)/Gamma(3/2) = 1.00823. The last is 0.8935153 / 0.8862269 = 1.0082241, i.e. 1.00822
+  // (the closed forms and the table use the exact value).
   expectPrinted(std::tgamma(2.1), 1.04649, 1e-5);
   expectPrinted(std::tgamma(2.2), 1.10180, 1e-5);
   expectPrinted(std::tgamma(1.6) / std::tgamma(1.5), 1.00822, 1e-5);
@@ -141,8 +143,8 @@ TEST(RestitutionClosure, DryClosedFormGammaValues) {
 
 TEST(RestitutionClosure, DryCoolingLawCoefficientToLeadingOrderInKappa) {
   // dT/dt = -zeta T = -B T^(8/5) with B = 2 sqrt(pi) kappa Gamma(21/10) 4^(1/10) sigma g2 n
-  // m^(-3/5) (design 4.3). Per unit sigma g2 n, zeta T / T^(8/5) = sqrt(pi) Phi_W(T/m)
-  // m^(-1/2) T^(-1/10) -> B as kappa -> 0, with a relative O(kappa) correction.
+  // m^(-3/5) (docs/hydro.md, "Closures"). Per unit sigma g2 n, zeta T / T^(8/5) = sqrt(pi)
+  // Phi_W(T/m) m^(-1/2) T^(-1/10) -> B as kappa -> 0, with a relative O(kappa) correction.
   const double m = 1.0807e-5, T = 1e-6;
   for (double kappa : {1e-3, 1e-4}) {
     const RestitutionClosure dry = RestitutionClosure::dry(kappa);
@@ -203,12 +205,12 @@ TEST(RestitutionClosure, EffectiveRestitutionDecreasesWithTemperatureForDryGrain
   EXPECT_GT(kWet.dPhiPdTheta(0.1), 0.0);
 }
 
-// Design 4.5, v_c = 0.0698 m/s, e_inf = 0.91, kappa = 0.1: every printed digit.
-// One correction: the dry wall Phi_W at theta = 1e-2 is 0.136497 (closed form
+// docs/hydro.md ("Reference values"), v_c = 0.0698 m/s, e_inf = 0.91, kappa = 0.1: every
+// printed digit. The dry wall Phi_W at theta = 1e-2 is 0.136497 (closed form
 // 2 kappa Gamma(21/10) 0.02^0.1 - kappa^2 Gamma(11/5) 0.02^0.2 = 0.141535 - 0.005039, and the
-// quadrature agrees to 1e-10), which rounds to 0.136; the design prints 0.137 (0.1365 rounded
-// twice).
-TEST(RestitutionClosure, ReproducesTheTableOfSection4_5) {
+// quadrature agrees to 1e-10), which rounds to 0.136 (the table first
+// drawn up for the closures printed 0.137, 0.1365 rounded twice).
+TEST(RestitutionClosure, ReproducesTheReferenceTableOfThePapersLaws) {
   struct Row {
     double theta, dry_e, wet_e, dry_phi_p, wet_phi_p, wall_dry, wall_wet;
   };

@@ -1,6 +1,7 @@
-// Rankine-Hugoniot relations of the disk gas (physics-hydro.md 3.2): the strong-shock table at
-// e = 0.9, the dilute ideal gas (gamma = 2), the general solver's limits (cold upstream, dilute
-// upstream, weak shock -> sound speed), and the three jump conditions on its output.
+// Rankine-Hugoniot relations of the disk gas (docs/hydro.md, "Theory helpers"): the strong-shock
+// table of "Reference values" at e = 0.9, the dilute ideal gas (gamma = 2), the general solver's
+// limits (cold upstream, dilute upstream, weak shock -> sound speed), and the three jump conditions
+// on its output.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -47,7 +48,7 @@ void expectJumpConditions(const GasState& up, const ShockSolution& down, double 
 
 }  // namespace
 
-// Design 3.2, 2D Henderson, e = 0.9: (nu1, nu2, s/U_p).
+// docs/hydro.md ("Reference values"), 2D Henderson, e = 0.9: (nu1, nu2, s/U_p).
 TEST(StrongShock, ReproducesTheTableOfSection3_2) {
   struct Row {
     double nu1, nu2, s_over_U;
@@ -184,7 +185,8 @@ TEST(RankineHugoniot, SolutionSatisfiesTheJumpConditions) {
 }
 
 TEST(CompactionFront, SnowPloughSpeed) {
-  // Design 3.2: for nu1 = 0.5 the compaction front moves at 2.2-2.6 U_p (nu_max 0.907-0.82).
+  // docs/hydro.md ("Theory helpers"): for nu1 = 0.5 the compaction front moves at 2.2-2.6 U_p
+  // (nu_max 0.907-0.82).
   expectPrinted(compactionFrontSpeed(0.5, 1.0), 2.2, 0.1);
   expectPrinted(compactionFrontSpeed(0.5, 1.0, kRandomClosePacking2D), 2.6, 0.1);
   EXPECT_NEAR(compactionFrontSpeed(0.5, 0.4, 0.8), 0.4 * 0.8 / 0.3, 1e-15);

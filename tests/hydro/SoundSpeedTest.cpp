@@ -1,5 +1,5 @@
-// Adiabatic and isothermal sound speeds of the disk gas (physics-hydro.md 3.1): the table of
-// c_s / sqrt(theta), the dilute limit gamma = 2, c_T < c_s, and the general formula with a
+// Adiabatic and isothermal sound speeds of the disk gas (docs/hydro.md, "Reference values"): the
+// table of c_s / sqrt(theta), the dilute limit gamma = 2, c_T < c_s, and the general formula with a
 // temperature-dependent Phi_P against finite differences of the equation of state.
 #include <gtest/gtest.h>
 
@@ -94,7 +94,7 @@ TEST(SoundSpeed, IsothermalIsSlowerThanAdiabatic) {
 }
 
 TEST(SoundSpeed, GeneralFormulaMatchesFiniteDifferencesOfTheEquationOfState) {
-  // T-dependent Phi_P adds theta Phi_P'(theta) nu g2 to dp/dT|_n (design 3.1).
+  // T-dependent Phi_P adds theta Phi_P'(theta) nu g2 to dp/dT|_n (docs/hydro.md, "Theory helpers").
   for (const RestitutionClosure& r :
        {RestitutionClosure::dry(0.1), RestitutionClosure::wet(0.91, 0.0698),
         RestitutionClosure::constant(0.9)}) {
@@ -120,7 +120,7 @@ TEST(SoundSpeed, TemperatureDependenceOfTheClosureMatters) {
 }
 
 TEST(SoundSpeed, PaperExample) {
-  // Design 3.1: nu = 0.6, theta = v0^2/4 with v0 = 0.6245 m/s, e = 0.9: c_s ~ 2.5 m/s.
+  // nu = 0.6, theta = v0^2/4 with v0 = 0.6245 m/s, e = 0.9: c_s ~ 2.5 m/s.
   const double v0 = 0.6245;
   expectPrinted(adiabaticSoundSpeed(0.6, v0 * v0 / 4, RestitutionClosure::constant(0.9)), 2.5, 0.1);
 }

@@ -1,7 +1,7 @@
-// Transport coefficients of inelastic hard disks, d = 2 (physics-hydro.md 1.3-1.5): the
-// Garzo-Dufty table of 1.5(B), the elastic Enskog (Gass) limit where the compact JR set (A)
-// and GD (B) coincide, the dilute reference values, and the kinetic scales of the conventions
-// table (collision frequency, mean free path, Haff time).
+// Transport coefficients of inelastic hard disks, d = 2 (docs/hydro.md, "Closures"): the
+// Garzo-Dufty table of docs/hydro.md ("Reference values"), the elastic Enskog (Gass) limit where
+// the compact JR set (A) and GD (B) coincide, the dilute reference values, and the kinetic scales
+// of the conventions table (collision frequency, mean free path, Haff time).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,7 +38,8 @@ TEST(DiskGas, AreaFractionAndDensity) {
   EXPECT_NEAR(kGas.numberDensity(densityAt(0.5)), n, 1e-9 * n);
 }
 
-// Design 1.5(B): (eta*, lambda_b*, kappa*) at e = 0.9 and in the elastic Enskog limit.
+// docs/hydro.md ("Reference values"): (eta*, lambda_b*, kappa*) at e = 0.9 and in the elastic
+// Enskog limit.
 TEST(GarzoDufty, ReproducesTheTableOfSection1_5) {
   struct Row {
     double nu, eta, lambda_b, kappa, eta_el, lambda_b_el, kappa_el;
@@ -93,8 +94,9 @@ TEST(Transport, JenkinsRichmanEqualsGarzoDuftyForElasticDisks) {
   }
 }
 
-TEST(Transport, JenkinsRichmanIsTheDesignFormulaInRhoAndG) {
-  // Design 1.5(A), written with 1/G: checks the finite-at-n=0 rewriting in the code.
+TEST(Transport, JenkinsRichmanIsTheDocumentedFormulaInRhoAndG) {
+  // docs/hydro.md ("Closures", set A), written with 1/G: checks the finite-at-n=0 rewriting in the
+  // code.
   const double nu = 0.45, theta = 0.07, e = 0.9;
   const double rho = densityAt(nu), G = nu * pairCorrelation(nu), s = kGas.sigma;
   const double base = rho * s * std::sqrt(theta);
@@ -109,7 +111,7 @@ TEST(Transport, JenkinsRichmanIsTheDesignFormulaInRhoAndG) {
 }
 
 TEST(Transport, InelasticGarzoDuftyIsBelowTheElasticSet) {
-  // Design: the elastic-coefficient set (A) overestimates eta by 5-10 % and kappa by 8-20 %
+  // The elastic-coefficient set (A) overestimates eta by 5-10 % and kappa by 8-20 %
   // at e = 0.9, nu = 0.3-0.6.
   for (double nu : {0.3, 0.6}) {
     const double rho = densityAt(nu);
@@ -175,7 +177,7 @@ TEST(KineticScales, ConventionsTableNumbers) {
   // zeta = sqrt(pi)(1 - e^2) g2 n sigma sqrt(T/m) = (1/2)(1 - e^2) chi nu0 (GD reduced).
   const double nu0 = 2 * std::sqrt(kPi) * n * kGas.sigma * std::sqrt(theta);
   expectRelative(zeta(n, T), garzoDuftyReduced(nu, constantE(0.9)).zeta * nu0, 1e-14);
-  // Design 3.2: behind the paper's shocks, nu2 ~ 0.65, theta2 ~ 0.08: tau_H ~ 9 ms.
+  // Behind the paper's shocks, nu2 ~ 0.65, theta2 ~ 0.08: tau_H ~ 9 ms.
   const double n2 = 4.0 * 0.65 / (kPi * kGas.sigma * kGas.sigma);
   expectPrinted(zeta.haffTime(n2, kGas.mass * 0.08), 9e-3, 1e-3);
 }
