@@ -78,8 +78,14 @@ int runHydro(const HydroOptions& opt) {
                         ? hydro::TransportSet::GarzoDufty
                         : hydro::TransportSet::JenkinsRichman;
   model.knudsen_length = d;
-  model.contact.scale =
-      hydro::kHexagonalClosePacking * dv.mass / model.diskArea() * scene.run.gravity * d;
+  model.pair_correlation.form = scene.hydro.pair_correlation == HydroPairCorrelation::Henderson
+                                    ? hydro::PairCorrelation::Form::Henderson
+                                    : hydro::PairCorrelation::Form::Luding;
+  model.contact.scale = scene.hydro.contact_pressure * hydro::kHexagonalClosePacking * dv.mass /
+                        model.diskArea() * scene.run.gravity * d;
+  if (scene.hydro.particles == HydroParticles::Rough)  // q = 4 I/(m d^2) of a solid sphere
+    model.rough =
+        hydro::RoughParticles{true, scene.contact.friction, scene.contact.tangential_limit, 0.4};
   if (scene.hydro.side_walls && !scene.container.periodic_x)
     model.side_wall_width = scene.container.width;
   hydro::HydroGeometry geom;
