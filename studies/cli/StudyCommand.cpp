@@ -10,17 +10,18 @@
 #include <thread>
 
 #include "h5/AtomicFile.hpp"
+#include "studies/cli/StudyKinds.hpp"
+#include "studies/cli/Version.hpp"
+#include "studies/framework/InstalledFiles.hpp"
+#include "studies/framework/RunCosts.hpp"
+#include "studies/framework/Study.hpp"
+#include "studies/report/ReportWriter.hpp"
+#include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/runner/ChildProcess.hpp"
 #include "studies/runner/InterruptFlag.hpp"
 #include "studies/runner/RemoteWorkers.hpp"
-#include "studies/report/ReportWriter.hpp"
 #include "studies/runner/RunCache.hpp"
-#include "studies/cli/StudyKinds.hpp"
-#include "studies/framework/RunCosts.hpp"
-#include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/runner/RunScheduler.hpp"
-#include "studies/framework/Study.hpp"
-#include "studies/cli/Version.hpp"
 
 namespace granwave {
 
@@ -28,7 +29,7 @@ namespace {
 
 std::string reportScript() {
   if (const char* env = std::getenv("GRANWAVE_REPORT_SCRIPT")) return env;
-  return GRANWAVE_REPORT_SCRIPT;
+  return installedFile("report/render_report.py");
 }
 
 void renderReport(const std::string& results, const std::string& html, const std::string& log) {
@@ -39,8 +40,14 @@ void renderReport(const std::string& results, const std::string& html, const std
         fmt::format("{} not found: the report needs Debian's python3-matplotlib and python3-h5py "
                     "(results are in {}; use --no-report to skip the page)",
                     python, results));
+  const std::string script = reportScript();
+  if (!std::filesystem::exists(script))
+    throw std::runtime_error(fmt::format(
+        "the report renderer {} is missing (it is installed with granwave under "
+        "share/granwave/report; GRANWAVE_REPORT_SCRIPT names another; results are in {})",
+        script, results));
   std::filesystem::remove(log);
-  ChildProcess child(python, {reportScript(), results, html}, log);
+  ChildProcess child(python, {script, results, html}, log);
   ChildOutcome out;
   while (!child.poll(out)) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   if (out.exit_code != 0) {

@@ -66,6 +66,8 @@ std::string formatNumber(double v, int digits) {
   return fmt::format("{:.{}f}", v, digits);
 }
 
+std::string formatCompact(double v) { return fmt::format("{:g}", v); }
+
 std::string format(const Measurement& m, int digits) {
   if (!m.valid()) return "–";
   if (!std::isfinite(m.error)) return formatNumber(m.value, digits);

@@ -30,5 +30,7 @@ double sigmaDistance(const Measurement& a, const Measurement& b);
 // significant digits; "–" when invalid.
 std::string format(const Measurement& m, int digits = 2);
 std::string formatNumber(double v, int digits = 2);
+// The shortest form of a number ("{:g}": 2.5, 1e-05), for run labels and scene overrides.
+std::string formatCompact(double v);
 
 }  // namespace granwave

@@ -21,6 +21,33 @@ Scene studyScene(const StudyFile& study, const std::string& scene_path,
   }
 }
 
+LawScenes LawScenes::read(StudyFile& f) {
+  LawScenes s;
+  s.path[0] = f.scenePath("scenes", "dry", "../scenes/paper-dry.toml");
+  s.path[1] = f.scenePath("scenes", "wet", "../scenes/paper-wet.toml");
+  s.set = f.strings("scenes", "set", {});
+  return s;
+}
+
+void LawScenes::loadBase(const StudyFile& f) {
+  for (int law = 0; law < kLaws; ++law) base[law] = studyScene(f, path[law], set);
+}
+
+Scene LawScenes::scene(const StudyFile& f, int law,
+                       const std::vector<std::string>& overrides) const {
+  std::vector<std::string> all = set;
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  return studyScene(f, path[law], all);
+}
+
+std::string particleLabel(int law, const std::string& tag) {
+  return fmt::format("ED {} {}", kLawNames[law], tag);
+}
+
+std::string hydroLabel(int law, const std::string& tag) {
+  return fmt::format("hydro {} {}", kLawNames[law], tag);
+}
+
 hydro::RestitutionClosure restitutionClosure(const Scene& s) {
   if (s.hydro.restitution_model == HydroRestitutionModel::Constant ||
       s.contact.restitution == RestitutionKind::Constant)

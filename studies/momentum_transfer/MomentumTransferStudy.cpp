@@ -2,14 +2,17 @@
 
 #include <fmt/format.h>
 
-#include "studies/framework/StudyScenes.hpp"
+#include "studies/momentum_transfer/MomentumTransferAnalysis.hpp"
+#include "studies/momentum_transfer/MomentumTransferReport.hpp"
 
 namespace granwave {
 
+std::string MomentumTransferConfig::label(int law, int seed) {
+  return particleLabel(law, fmt::format("seed {}", seed));
+}
+
 MomentumTransferStudy::MomentumTransferStudy(StudyFile& f) {
-  c_.path[0] = f.scenePath("scenes", "dry", "../scenes/paper-dry.toml");
-  c_.path[1] = f.scenePath("scenes", "wet", "../scenes/paper-wet.toml");
-  c_.set = f.strings("scenes", "set", {});
+  c_.scenes = LawScenes::read(f);
   c_.duration = f.number("particles", "duration", c_.duration);
   c_.seeds = f.integers("particles", "seeds", c_.seeds);
   c_.window = f.integer("particles", "window_cycles", c_.window);
@@ -33,25 +36,26 @@ MomentumTransferStudy::MomentumTransferStudy(StudyFile& f) {
   if (!(c_.min_area_fraction >= 0 && c_.min_area_fraction < 0.9))
     f.fail("analysis", "min_area_fraction", "expected a value in [0, 0.9)");
 
-  for (int law = 0; law < 2; ++law) {
-    base_[law] = studyScene(f, c_.path[law], c_.set);
-    if (!(base_[law].drive.frequency > 0))
-      f.fail("scenes", law == 0 ? "dry" : "wet",
-             "the momentum-transfer study needs a driven scene");
-  }
-  for (int law = 0; law < 2; ++law)
+  c_.scenes.loadBase(f);
+  for (int law = 0; law < kLaws; ++law)
+    if (!(c_.scenes.base[law].drive.frequency > 0))
+      f.fail("scenes", kLawNames[law], "the momentum-transfer study needs a driven scene");
+  for (int law = 0; law < kLaws; ++law)
     for (int seed : c_.seeds) {
-      std::vector<std::string> o = c_.set;
-      o.push_back(fmt::format("run.seed={}", seed));
-      o.push_back(fmt::format("run.duration={:g}", c_.duration));
-      RunRequest q;
-      q.kind = RunKind::Particles;
-      q.label = label(law, seed);
-      q.scene = studyScene(f, c_.path[law], o);
+      RunRequest q = runRequest(RunKind::Particles, MomentumTransferConfig::label(law, seed),
+                                c_.scenes.scene(f, law,
+                                                {fmt::format("run.seed={}", seed),
+                                                 fmt::format("run.duration={:g}", c_.duration)}));
       q.window_cycles = c_.window;
       q.blocks = c_.blocks;
       requests_.push_back(std::move(q));
     }
+}
+
+void MomentumTransferStudy::analyse(const RunSet& runs, h5::File& results, Report& report) const {
+  const MomentumTransferResults r = analyseMomentumTransfer(c_, runs);
+  writeMomentumTransferResults(results, c_, r);
+  reportMomentumTransfer(c_, r, report);
 }
 
 std::unique_ptr<Study> makeMomentumTransferStudy(StudyFile& file) {

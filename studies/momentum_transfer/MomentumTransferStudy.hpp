@@ -3,21 +3,18 @@
 // wet particle runs of the paper's scene. RMS(v_x) and v~_z profiles of both layers at the
 // paper's phase, the deficiency factor r_x(z, t) = RMS(v_x)_dry / RMS(v_x)_wet during the wet
 // layer's impact wave and its row mean r~_x(t), against the binary-collision value 2 and the
-// paper's 2.17 +- 0.56. The plan is built in MomentumTransferStudy.cpp, the analysis in
-// MomentumTransferReport.cpp.
-#include <fmt/format.h>
-
+// paper's 2.17 +- 0.56. This file: the study's keys and its runs.
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "studies/framework/Study.hpp"
+#include "studies/framework/StudyScenes.hpp"
 
 namespace granwave {
 
 struct MomentumTransferConfig {
-  std::string path[2];  // dry, wet scene files
-  std::vector<std::string> set;
+  LawScenes scenes;
   double duration = 30;
   std::vector<int> seeds{1, 2, 3};
   int window = 2, blocks = 5;
@@ -26,6 +23,8 @@ struct MomentumTransferConfig {
   double margin = 0.05;            // T shown before and after the wave window in Fig. 8
   double min_rms = 1e-3;           // m/s: rows with a smaller wet RMS(v_x) are left out
   double min_area_fraction = 0.1;  // rows where either layer is more dilute are left out
+
+  static std::string label(int law, int seed);
 };
 
 class MomentumTransferStudy final : public Study {
@@ -37,13 +36,8 @@ class MomentumTransferStudy final : public Study {
   std::vector<RunRequest> plan() const override { return requests_; }
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
-  static std::string label(int law, int seed) {
-    return fmt::format("ED {} seed {}", law == 0 ? "dry" : "wet", seed);
-  }
-
  private:
   MomentumTransferConfig c_;
-  Scene base_[2];
   std::vector<RunRequest> requests_;
 };
 

@@ -6,11 +6,10 @@
 //   - at the lowest f the dry layer shows surface waves for Gamma in [3, 5], the wet one none;
 //   - both layers are crystals again at Gamma = 5 at the highest f;
 //   - the dry-wet differences in the diagram's symbols shrink as f rises.
+#include <cstddef>
 #include <string>
 #include <vector>
 
-#include "h5/File.hpp"
-#include "studies/report/Report.hpp"
 #include "studies/stability/StabilityGrid.hpp"
 
 namespace granwave {
@@ -24,9 +23,7 @@ struct FeatureCheck {
 
 std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid);
 
-// The checks as a report table (plus the measured reason where the surface waves are reversed)
-// and as string attributes of `group` in the results file.
-void reportPaperFeatures(const StabilityGrid& grid, h5::File& file, const std::string& group,
-                         ReportSection& section);
+// Index of the grid's lowest frequency (where the first three features are stated).
+std::size_t lowestFrequency(const StabilityGrid& grid);
 
 }  // namespace granwave

@@ -1,22 +1,20 @@
 #pragma once
 // The wave-fronts study (docs/studies.md): the paper's wave-propagation section (Sec. IV,
 // Figs. 4, 5, 6) from the particles and from the hydro solver, the cost of each against its
-// accuracy, where each method fails, and the simplest model that reproduces the particles.
-// The plan (runs) is built in WaveFrontsStudy.cpp, the analysis in WaveFrontsReport.cpp.
-#include <fmt/format.h>
-
+// accuracy, where each method fails, the simplest model that reproduces the particles, and
+// soft-sphere DEM (LAMMPS) beside them. This file: the study's keys and its runs.
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "studies/framework/ImpactFronts.hpp"
 #include "studies/framework/Study.hpp"
+#include "studies/framework/StudyScenes.hpp"
 
 namespace granwave {
 
 struct WaveFrontsConfig {
-  std::string dry_path, wet_path;
-  std::vector<std::string> set;
+  LawScenes scenes;
+  double e_eff[2] = {0, 0};  // constant restitution standing in for each law at T0
   double duration = 30;
   std::vector<int> seeds{1, 2, 3};
   int window = 2, blocks = 5;
@@ -39,9 +37,16 @@ struct WaveFrontsConfig {
   std::string lammps_executable = "lmp", lammps_deck;
   double lammps_duration = 15;
   int lammps_seed = 1;
-};
 
-inline constexpr const char* kLawNames[2] = {"dry", "wet"};
+  // Run labels: "ED dry seed 1", "hydro wet Gamma=2.5 100 cells rtol 0.01", ...
+  static std::string particleRun(int law, const std::string& tag) {
+    return particleLabel(law, tag);
+  }
+  static std::string hydroRun(int law, const std::string& tag) { return hydroLabel(law, tag); }
+  static std::string failureHydroRun(int law, double gamma, int cells, double rtol);
+  static std::string costHydroRun(int cells, double rtol);
+  std::string lammpsRun() const;
+};
 
 class WaveFrontsStudy final : public Study {
  public:
@@ -53,30 +58,16 @@ class WaveFrontsStudy final : public Study {
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
  private:
+  void readKeys(StudyFile& f);
+  void planLaw(const StudyFile& f, int law);
+  void planWetSweeps(const StudyFile& f);
   void addLammps(StudyFile& f);
-  void add(RunKind kind, int law, const std::string& label, std::vector<std::string> overrides,
-           double duration);
-  std::string edLabel(int law, const std::string& tag) const {
-    return fmt::format("ED {} {}", kLawNames[law], tag);
-  }
-  std::string hydroLabel(int law, const std::string& tag) const {
-    return fmt::format("hydro {} {}", kLawNames[law], tag);
-  }
+  // A run of `law` with the study's overrides and `overrides`; particle runs last `duration`.
+  RunRequest& add(const StudyFile& f, RunKind kind, int law, const std::string& label,
+                  std::vector<std::string> overrides, double duration);
 
-  void paperSection(const RunSet& runs, h5::File& f, Report& report) const;
-  void sweepSections(const RunSet& runs, h5::File& f, Report& report) const;
-  void costSection(const RunSet& runs, h5::File& f, Report& report) const;
-  void failureSection(const RunSet& runs, h5::File& f, Report& report) const;
-  void modelSection(const RunSet& runs, h5::File& f, Report& report) const;
-  void lammpsSection(const RunSet& runs, h5::File& f, Report& report) const;
-
-  const StudyFile* file_;
   WaveFrontsConfig c_;
-  Scene base_[2];
-  double e_eff_[2] = {0, 0};
   std::vector<RunRequest> requests_;
-  mutable ImpactFronts ed_paper_[2];  // filled by paperSection, used by the later sections
-  mutable std::string summary_;
 };
 
 std::unique_ptr<Study> makeWaveFrontsStudy(StudyFile& file);
