@@ -81,15 +81,15 @@ hydro::HydroRunOptions runOptions(const Scene& scene) {
 }
 
 // The plate-frame fields of every phase of the window, as the file holds them.
-void plateFrameFields(const hydro::GranularHydro1D& pde, const hydro::HydroResult& r,
-                      double mass, HydroRunContent& c) {
-  for (std::size_t i = 0; i < c.cells; ++i) c.plate_z.push_back(pde.cellCentre(static_cast<int>(i)));
+void plateFrameFields(const hydro::GranularHydro1D& pde, const hydro::HydroResult& r, double mass,
+                      HydroRunContent& c) {
+  for (std::size_t i = 0; i < c.cells; ++i)
+    c.plate_z.push_back(pde.cellCentre(static_cast<int>(i)));
   for (const auto& ph : r.window) {
     c.number_density.insert(c.number_density.end(), ph.n.begin(), ph.n.end());
     c.velocity_z.insert(c.velocity_z.end(), ph.u.begin(), ph.u.end());
     for (double th : ph.theta) c.temperature.push_back(mass * th);
-    c.area_fraction.insert(c.area_fraction.end(), ph.area_fraction.begin(),
-                           ph.area_fraction.end());
+    c.area_fraction.insert(c.area_fraction.end(), ph.area_fraction.begin(), ph.area_fraction.end());
     c.pressure.insert(c.pressure.end(), ph.pressure.begin(), ph.pressure.end());
   }
 }
@@ -116,8 +116,8 @@ void labFrameFields(const Scene& scene, const SceneDerived& dv, const hydro::Gra
   c.fronts = frontEpisodes(lab, {}, grid.z0, grid.wz, dv.T0, dt, {}, c.plate_height);
   c.rows = static_cast<std::size_t>(grid.nz);
   for (std::size_t j = 0; j < c.rows; ++j) c.lab_z.push_back(grid.zCentre(static_cast<int>(j)));
-  c.front_height = frontHeights(lab, grid.z0, grid.wz, dv.T0, FrontOptions{},
-                                &c.front_peak_temperature);
+  c.front_height =
+      frontHeights(lab, grid.z0, grid.wz, dv.T0, FrontOptions{}, &c.front_peak_temperature);
   c.lab_area_fraction = std::move(lab.profile_area_fraction);
   c.lab_temperature = std::move(lab.profile_temperature);
   c.lab_velocity_z = std::move(lab.profile_velocity_z);

@@ -16,16 +16,16 @@
 #include "particles/H5mdWriter.hpp"
 #include "particles/InitialState.hpp"
 #include "scene/SceneParser.hpp"
-#include "studies/cli/OutsideFailure.hpp"
-#include "studies/runner/ExitCode.hpp"
-#include "studies/runner/OrphanedTemporaries.hpp"
 #include "studies/cli/FieldsSetup.hpp"
-#include "studies/runner/InterruptFlag.hpp"
+#include "studies/cli/OutsideFailure.hpp"
 #include "studies/cli/ProgressReporter.hpp"
-#include "studies/runner/RunCache.hpp"
-#include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/cli/RunSummary.hpp"
 #include "studies/cli/Version.hpp"
+#include "studies/run_files/RunCheckpoint.hpp"
+#include "studies/runner/ExitCode.hpp"
+#include "studies/runner/InterruptFlag.hpp"
+#include "studies/runner/OrphanedTemporaries.hpp"
+#include "studies/runner/RunCache.hpp"
 
 namespace granwave {
 

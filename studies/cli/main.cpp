@@ -10,17 +10,17 @@
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
-#include "studies/cli/OutsideFailure.hpp"
-#include "studies/runner/ExitCode.hpp"
 #include "studies/cli/FieldsCommand.hpp"
 #include "studies/cli/HydroCommand.hpp"
-#include "studies/runner/RemoteWorkers.hpp"
-#include "studies/run_files/RunCheckpoint.hpp"
-#include "studies/runner/RunScheduler.hpp"
+#include "studies/cli/OutsideFailure.hpp"
 #include "studies/cli/SimulateCommand.hpp"
 #include "studies/cli/StudyCommand.hpp"
-#include "studies/framework/StudyFile.hpp"
 #include "studies/cli/Version.hpp"
+#include "studies/framework/StudyFile.hpp"
+#include "studies/run_files/RunCheckpoint.hpp"
+#include "studies/runner/ExitCode.hpp"
+#include "studies/runner/RemoteWorkers.hpp"
+#include "studies/runner/RunScheduler.hpp"
 
 int main(int argc, char** argv) {
   // Before anything else: MPI may rewrite argc/argv. A no-op outside mpirun.

@@ -144,6 +144,17 @@ CoolingRun coolingRun(const EffectiveRestitutionConfig& c, const RunSet& runs, i
   return out;
 }
 
+// The block values of the area fraction at phase k/M of every cycle of the window, row j.
+std::vector<double> blockValues(const ParticleFields& p, int k, int j) {
+  const int M = p.phases / p.cycles_per_window, Z = p.nz;
+  std::vector<double> out;
+  for (int c = 0; c < p.cycles_per_window; ++c)
+    for (int b = 0; b < p.blocks; ++b)
+      out.push_back(
+          p.block_area_fraction[(static_cast<std::size_t>(b) * p.phases + c * M + k) * Z + j]);
+  return out;
+}
+
 // The particles' area fraction folded onto one cycle, [phase][row], with the variance of the
 // mean from the blocks (at least 1e-6).
 void foldedAreaFraction(const ParticleFields& p, std::vector<double>& mean,
@@ -155,15 +166,12 @@ void foldedAreaFraction(const ParticleFields& p, std::vector<double>& mean,
     for (int j = 0; j < Z; ++j) {
       double s = 0, s2 = 0;
       int cnt = 0;
-      for (int c = 0; c < p.cycles_per_window; ++c)
-        for (int b = 0; b < p.blocks; ++b) {
-          const double v =
-              p.block_area_fraction[(static_cast<std::size_t>(b) * p.phases + c * M + k) * Z + j];
-          if (!std::isfinite(v)) continue;
-          s += v;
-          s2 += v * v;
-          ++cnt;
-        }
+      for (double v : blockValues(p, k, j)) {
+        if (!std::isfinite(v)) continue;
+        s += v;
+        s2 += v * v;
+        ++cnt;
+      }
       const std::size_t i = static_cast<std::size_t>(k) * Z + j;
       mean[i] = cnt ? s / cnt : 0.0;
       var[i] = cnt > 1 ? std::max((s2 - s * s / cnt) / (cnt - 1) / cnt, 1e-6) : 1e-6;

@@ -87,34 +87,36 @@ void tally(const FrontComparison& cmp, SoundSpeedResults& r) {
   }
 }
 
+// Every impact front of one run (or the run's failure).
+void compareRun(const SoundSpeedConfig& c, const RunSet& runs, const std::string& name, int law,
+                SoundSpeedResults& r) {
+  const RunRecord& run = runs.get(name);
+  if (!run.ok) {
+    FrontComparison failed;
+    failed.outcome = FrontComparison::Outcome::RunFailed;
+    failed.run = name;
+    failed.failure = run.message;
+    r.fronts.push_back(failed);
+    return;
+  }
+  const hydro::RestitutionClosure closure = restitutionClosure(c.scenes.base[law]);
+  const double mass = derive(c.scenes.base[law]).mass;
+  const ParticleFields p = readParticleFields(run.fieldsPath());
+  for (const Front& fr : p.fronts) {
+    if (!fr.from_impact || !std::isfinite(fr.speed)) continue;
+    r.fronts.push_back(compare(c, name, p, fr, mass, closure));
+    if (r.fronts.back().outcome == FrontComparison::Outcome::Compared) tally(r.fronts.back(), r);
+  }
+}
+
 }  // namespace
 
 SoundSpeedResults analyseSoundSpeed(const SoundSpeedConfig& c, const RunSet& runs) {
   SoundSpeedResults r;
-  for (int law = 0; law < kLaws; ++law) {
-    const hydro::RestitutionClosure closure = restitutionClosure(c.scenes.base[law]);
-    const double mass = derive(c.scenes.base[law]).mass;
+  for (int law = 0; law < kLaws; ++law)
     for (int n : c.counts)
-      for (double gamma : c.gammas) {
-        const std::string name = SoundSpeedConfig::label(law, n, gamma);
-        const RunRecord& run = runs.get(name);
-        if (!run.ok) {
-          FrontComparison failed;
-          failed.outcome = FrontComparison::Outcome::RunFailed;
-          failed.run = name;
-          failed.failure = run.message;
-          r.fronts.push_back(failed);
-          continue;
-        }
-        const ParticleFields p = readParticleFields(run.fieldsPath());
-        for (const Front& fr : p.fronts) {
-          if (!fr.from_impact || !std::isfinite(fr.speed)) continue;
-          r.fronts.push_back(compare(c, name, p, fr, mass, closure));
-          if (r.fronts.back().outcome == FrontComparison::Outcome::Compared)
-            tally(r.fronts.back(), r);
-        }
-      }
-  }
+      for (double gamma : c.gammas)
+        compareRun(c, runs, SoundSpeedConfig::label(law, n, gamma), law, r);
   return r;
 }
 

@@ -53,6 +53,34 @@ void judge(const ModelHierarchy& m, ModelCandidate& c, int period) {
                  m.reference_period > 0 && period == m.reference_period;
 }
 
+FailureCase particleFailure(const RunSet& runs, int law, double gamma) {
+  FailureCase f;
+  const RunRecord& r =
+      runs.get(WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", g(gamma))));
+  f.ok = r.ok;
+  if (r.ok) {
+    f.period = readParticleFields(r.fieldsPath()).layer_period;
+  } else {
+    f.failure = r.message;
+    f.collapse_time = collapseTime(r.message);
+  }
+  return f;
+}
+
+FailureCase hydroFailure(const RunSet& runs, int law, double gamma, int cells, double rtol) {
+  FailureCase f;
+  const HydroOutcome h =
+      hydroOutcome(runs, WaveFrontsConfig::failureHydroRun(law, gamma, cells, rtol));
+  f.ok = h.fields.has_value();
+  f.failure = h.failure;
+  if (f.ok) {
+    f.periodic = h.fields->periodic;
+    f.period = h.fields->period;
+    f.cycles = h.fields->cycles;
+  }
+  return f;
+}
+
 }  // namespace
 
 FailureMap analyseFailures(const WaveFrontsConfig& c, const RunSet& runs) {
@@ -64,27 +92,12 @@ FailureMap analyseFailures(const WaveFrontsConfig& c, const RunSet& runs) {
             fmt::format("{} {} cells rtol {:g}", kLawNames[law], cells, rtol));
   for (double gamma : c.fail_gammas) {
     std::vector<FailureCase> particles, hydro;
-    for (int law = 0; law < kLaws; ++law) {
-      FailureCase f;
-      const RunRecord& r =
-          runs.get(WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", g(gamma))));
-      f.ok = r.ok;
-      if (r.ok) f.period = readParticleFields(r.fieldsPath()).layer_period;
-      if (!r.ok) f.failure = r.message, f.collapse_time = collapseTime(r.message);
-      particles.push_back(f);
-    }
+    for (int law = 0; law < kLaws; ++law) particles.push_back(particleFailure(runs, law, gamma));
     for (int law = 0; law < kLaws; ++law)
       for (int cells : c.fail_cells)
         for (double rtol : c.fail_rtol) {
-          FailureCase f;
-          const HydroOutcome h =
-              hydroOutcome(runs, WaveFrontsConfig::failureHydroRun(law, gamma, cells, rtol));
-          f.ok = h.fields.has_value();
-          f.failure = h.failure;
-          if (f.ok) f.periodic = h.fields->periodic, f.period = h.fields->period;
-          if (f.ok) f.cycles = h.fields->cycles;
-          out.hydro_failures += !f.ok;
-          hydro.push_back(f);
+          hydro.push_back(hydroFailure(runs, law, gamma, cells, rtol));
+          out.hydro_failures += !hydro.back().ok;
         }
     out.particles.push_back(particles);
     out.hydro.push_back(hydro);

@@ -11,8 +11,8 @@
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "studies/cli/OutsideFailure.hpp"
-#include "studies/runner/ExitCode.hpp"
 #include "studies/run_files/RunCheckpoint.hpp"
+#include "studies/runner/ExitCode.hpp"
 
 using namespace granwave;
 

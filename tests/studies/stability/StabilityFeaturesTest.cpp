@@ -4,6 +4,7 @@
 // fails the ones it contradicts; a grid without the points a check needs says "not tested".
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include "studies/stability/StabilityFeatures.hpp"
@@ -31,9 +32,8 @@ StabilityGrid grid(const std::vector<double>& f, const std::vector<double>& gamm
   for (int law = 0; law < 2; ++law)
     for (std::size_t i = 0; i < f.size(); ++i)
       for (std::size_t j = 0; j < gammas.size(); ++j) {
-        bool wave = false;
-        if (i == 0)
-          for (double w : waves[law]) wave |= w == gammas[j];
+        const bool wave = i == 0 && std::find(waves[law].begin(), waves[law].end(), gammas[j]) !=
+                                        waves[law].end();
         g.verdicts[law].push_back(verdict(states[law][i][j], wave, law == 1 ? wet_period : 1));
       }
   return g;
