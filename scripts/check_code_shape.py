@@ -2,8 +2,8 @@
 """The size limits of the project's style (docs/ARCHITECTURE.md, "Shape of the code"):
 no source file over 450 lines, no function over 80 lines or nested more than 4 deep.
 
-Usage: check_code_shape.py BUILD_DIR [--report] [--max-file 450] [--max-function 80]
-                           [--max-nesting 4]
+Usage: check_code_shape.py BUILD_DIR [--report] [--only PREFIX ...] [--max-file 450]
+                           [--max-function 80] [--max-nesting 4] [-j JOBS]
 
 Every C++ file of the repository (tests and benchmarks included) is counted for lines; the
 functions are found by parsing each translation unit of BUILD_DIR/compile_commands.json with
@@ -12,7 +12,8 @@ compiler sees them. A function's length is the lines from its name to its closin
 its nesting is the deepest chain of if / for / while / do / switch / try / lambda inside it
 (an `else if` continues its `if` and does not nest). Functions defined in headers are counted
 once. Exits 1 and lists the offenders if a limit is exceeded; --report lists the largest
-figures per folder whatever the limits.
+figures per folder whatever the limits; --only limits the check to files under the given
+folders (e.g. --only studies tests/studies), which .ci/run uses for the folders that meet it.
 """
 import argparse
 import json
@@ -127,14 +128,21 @@ def main():
     ap.add_argument("--max-function", type=int, default=80)
     ap.add_argument("--max-nesting", type=int, default=4)
     ap.add_argument("-j", type=int, default=os.cpu_count() or 1)
+    ap.add_argument("--only", nargs="+", default=[])
     a = ap.parse_args()
+    only = [p.rstrip("/") for p in a.only]
+
+    def selected(rel):
+        return not only or any(rel == p or rel.startswith(p + "/") for p in only)
+
     db = os.path.join(a.build, "compile_commands.json")
     if not os.path.exists(db):
         print(f"check_code_shape: {db} not found (configure with CMake first)", file=sys.stderr)
         return 2
     with open(db) as f:
         entries = [e for e in json.load(f)
-                   if os.path.realpath(e["file"]).startswith(ROOT + os.sep)]
+                   if os.path.realpath(e["file"]).startswith(ROOT + os.sep)
+                   and selected(os.path.relpath(os.path.realpath(e["file"]), ROOT))]
     functions = {}
     with ProcessPoolExecutor(max_workers=a.j) as pool:
         for found in pool.map(functions_of, entries):
@@ -144,6 +152,8 @@ def main():
     per_folder = {}
     for path in source_files():
         rel = os.path.relpath(path, ROOT)
+        if not selected(rel):
+            continue
         with open(path, encoding="utf-8") as f:
             n = sum(1 for _ in f)
         per_folder.setdefault(folder(rel), [0, 0, ("", 0), ("", 0)])[0] += n
@@ -151,6 +161,8 @@ def main():
         if n > a.max_file:
             problems.append(f"{rel}: {n} lines (limit {a.max_file})")
     for (path, line), (name, lines, depth) in sorted(functions.items()):
+        if not selected(path):
+            continue
         entry = per_folder.setdefault(folder(path), [0, 0, ("", 0), ("", 0)])
         if lines > entry[2][1]:
             entry[2] = (f"{name} ({os.path.basename(path)}:{line})", lines)
@@ -165,9 +177,10 @@ def main():
         for name, (total, largest, longest, deepest) in sorted(per_folder.items()):
             print(f"{name:32} {total:6} {largest:12}  {longest[1]:4} {longest[0]}")
             print(f"{'':53}{deepest[1]:4} {deepest[0]}")
-        over = sum(1 for _, l, _ in functions.values() if l > a.max_function)
-        deep = sum(1 for _, _, d in functions.values() if d > a.max_nesting)
-        print(f"functions: {len(functions)}; over {a.max_function} lines: {over}; "
+        shown = [v for (p, _), v in functions.items() if selected(p)]
+        over = sum(1 for _, l, _ in shown if l > a.max_function)
+        deep = sum(1 for _, _, d in shown if d > a.max_nesting)
+        print(f"functions: {len(shown)}; over {a.max_function} lines: {over}; "
               f"nested over {a.max_nesting}: {deep}")
     for p in problems:
         print(p)
