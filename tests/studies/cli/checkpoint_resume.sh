@@ -70,3 +70,4 @@ grep -q "run.h5.checkpoint" damaged.log || fail "the error does not name the che
 [ "$(wc -l < damaged.log)" -eq 1 ] || fail "more than one error line: $(cat damaged.log)"
 [ ! -e run.h5 ] || fail "a damaged checkpoint left a run file"
 echo "checkpoint_resume: ok (continued from $(sed -n 's/.*at t = \([0-9.]*\) s.*/\1/p' resume.log) s)"
+rm -rf "$work"  # passed: nothing left behind (a failure keeps WORKDIR for a look)

@@ -16,3 +16,4 @@ mkdir -p "$work"
 "$(dirname "$0")/../../tools/h5_identical.py" "$work/serial/results.h5" "$work/mpi/results.h5" \
   --only /results --exclude /results/wave_fronts/cost
 echo "mpi_matches_serial: ok"
+rm -rf "$work"  # passed: nothing left behind (a failure keeps WORKDIR for a look)

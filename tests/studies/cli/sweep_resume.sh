@@ -89,3 +89,4 @@ leftovers=$(ls "$work/killed/runs" | grep -e checkpoint -e '\.tmp-' -e '\.lock$'
 [ -z "$leftovers" ] || { echo "sweep_resume: left in the cache: $leftovers" >&2; exit 1; }
 echo "sweep_resume: ok ($done_before runs kept across SIGKILL, $attempt extra kill(s); continued:" \
   "$(grep -h "continuing from" "$work"/killed/runs/particles-*.log | sed 's/.* at t = //' | tr '\n' ' '))"
+rm -rf "$work"  # passed: nothing left behind (a failure keeps WORKDIR for a look)
