@@ -145,6 +145,9 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
     f.writeStringAttribute("/", "summary", report.summary);
     f.writeStringAttribute("/", "granwave_version", kVersion);
     f.writeStringAttribute("/", "build_id", build_id);
+    const SourceCommit source = sourceCommit();
+    f.writeStringAttribute("/", "source_commit", source.commit);
+    f.writeStringAttribute("/", "source_tree", source.tree);
     f.writeStringDataset("/study_file", file.text());
     writeReport(f, report);
     // An interrupt during the analysis: nothing is committed; the runs stay cached.

@@ -10,6 +10,7 @@
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/cli/ExportCommand.hpp"
 #include "studies/cli/FieldsCommand.hpp"
 #include "studies/cli/HydroCommand.hpp"
 #include "studies/cli/OutsideFailure.hpp"
@@ -37,6 +38,8 @@ int main(int argc, char** argv) {
   granwave::addHydroCommand(app, hydro);
   granwave::StudyOptions study;
   granwave::addStudyCommand(app, study);
+  granwave::ExportOptions exported;
+  granwave::addExportCommand(app, exported);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -58,6 +61,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fields")) return granwave::runFields(fields);
     if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
     if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
+    if (app.got_subcommand("export")) return granwave::runExport(exported);
   } catch (const granwave::StudyInterrupted& e) {
     fmt::print(stderr, "granwave: {}\n", e.what());
     return stop(granwave::kExitInterrupted);

@@ -15,12 +15,15 @@ std::string installedFile(const std::string& relative) {
   return (bin.parent_path() / "share" / "granwave" / relative).lexically_normal().string();
 }
 
-std::string sourceCommit() {
+SourceCommit sourceCommit() {
   // Written by cmake/SourceCommit.cmake: the commit, then "clean", "dirty" or "unknown".
   std::ifstream in(installedFile("source-commit"));
   std::string commit, state;
-  if (!(in >> commit >> state) || commit == "unknown") return "unknown";
-  return state == "dirty" ? commit + " (with uncommitted changes)" : commit;
+  SourceCommit out;
+  if (!(in >> commit >> state) || commit == "unknown") return out;
+  out.commit = commit;
+  out.tree = state == "clean" ? "clean" : state == "dirty" ? "with uncommitted changes" : "unknown";
+  return out;
 }
 
 }  // namespace granwave

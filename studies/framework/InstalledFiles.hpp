@@ -12,10 +12,13 @@ namespace granwave {
 // The path of a shipped file (it need not exist; the caller says what is missing).
 std::string installedFile(const std::string& relative);
 
-// The git commit the running executable was built from and whether the working tree had
-// uncommitted changes, as recorded at build time (share/granwave/source-commit): e.g.
-// "3f2a9c1d0e...", "3f2a9c1d0e... (with uncommitted changes)", or "unknown" when the build
-// was not made from a git checkout or the record is missing.
-std::string sourceCommit();
+// The git commit the running executable was built from and the state of the working tree
+// then, as recorded at build time (share/granwave/source-commit by cmake/SourceCommit.cmake)
+// and read at run time, so that an installed copy knows it too.
+struct SourceCommit {
+  std::string commit = "unknown";  // 40 hex digits, or "unknown" (no git checkout, no record)
+  std::string tree = "unknown";    // "clean", "with uncommitted changes", "unknown"
+};
+SourceCommit sourceCommit();
 
 }  // namespace granwave

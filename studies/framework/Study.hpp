@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "h5/File.hpp"
+#include "studies/framework/StudyFile.hpp"
 #include "studies/report/Report.hpp"
 #include "studies/runner/RunRequest.hpp"
-#include "studies/framework/StudyFile.hpp"
 
 namespace granwave {
 

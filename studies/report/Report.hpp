@@ -23,6 +23,11 @@ struct Image {
   int nx = 0, ny = 0;
   double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
   std::string label, cmap = "viridis";
+  // Optional names of the columns and rows, drawn as tick labels at their centres.
+  std::vector<std::string> x_labels, y_labels;
+  // Optional categories: value k (0, 1, ...) means category_labels[k], drawn in
+  // category_colors[k] with a key instead of a continuous colour scale.
+  std::vector<std::string> category_labels, category_colors;
 };
 
 struct Figure {

@@ -50,6 +50,12 @@ void writeFigure(h5::File& f, const std::string& g, const Figure& fig) {
     f.writeAttribute<double>(ig, "y1", im.y1);
     f.writeStringAttribute(ig, "label", im.label);
     f.writeStringAttribute(ig, "cmap", im.cmap);
+    if (!im.x_labels.empty()) f.writeStringArrayAttribute(ig, "x_labels", im.x_labels);
+    if (!im.y_labels.empty()) f.writeStringArrayAttribute(ig, "y_labels", im.y_labels);
+    if (!im.category_labels.empty()) {
+      f.writeStringArrayAttribute(ig, "category_labels", im.category_labels);
+      f.writeStringArrayAttribute(ig, "category_colors", im.category_colors);
+    }
   }
 }
 

@@ -37,6 +37,70 @@ Table costTable(const CostAccuracy& cost) {
   return t;
 }
 
+Table particleFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
+  Table t;
+  t.title = "Particles without the TC model";
+  t.columns = {"Gamma", "dry", "wet"};
+  for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
+    std::vector<std::string> row{g(c.fail_gammas[i])};
+    for (const FailureCase& f : m.particles[i])
+      row.push_back(f.ok ? fmt::format("ran {:g} s, period {}", c.fail_duration, f.period)
+                         : shortReason(f.failure));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// One row per case (law, grid, tolerance), one column per Gamma: the table stays as narrow as
+// the Gamma values are few.
+Table hydroFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
+  Table t;
+  t.title = "Hydro solver over Gamma, grid and tolerance";
+  t.columns = {"law, grid, tolerance"};
+  for (double gamma : c.fail_gammas) t.columns.push_back("Gamma = " + g(gamma));
+  for (std::size_t k = 0; k < m.hydro_cases.size(); ++k) {
+    std::vector<std::string> row{m.hydro_cases[k]};
+    for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
+      const FailureCase& f = m.hydro[i][k];
+      row.push_back(!f.ok        ? "fails: " + shortReason(f.failure)
+                    : f.periodic ? fmt::format("ok, period {}", f.period)
+                                 : fmt::format("ok, no period in {} cycles", f.cycles));
+    }
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// Two colours for a yes/no outcome, the cases and Gamma values named on the axes.
+Figure hydroFailureMap(const WaveFrontsConfig& c, const FailureMap& m) {
+  Image map;
+  map.nx = static_cast<int>(c.fail_gammas.size());
+  map.ny = static_cast<int>(m.hydro_cases.size());
+  map.values.assign(static_cast<std::size_t>(map.nx * map.ny), NAN);
+  for (std::size_t i = 0; i < c.fail_gammas.size(); ++i)
+    for (std::size_t k = 0; k < m.hydro_cases.size(); ++k)
+      map.values[k * map.nx + i] = m.hydro[i][k].ok ? 1 : 0;
+  map.x0 = -0.5;
+  map.x1 = map.nx - 0.5;
+  map.y0 = -0.5;
+  map.y1 = map.ny - 0.5;
+  for (double gamma : c.fail_gammas) map.x_labels.push_back(g(gamma));
+  map.y_labels = m.hydro_cases;
+  map.label = "CVODE outcome";
+  map.category_labels = {"failed", "reached the end"};
+  map.category_colors = {"tab:red", "tab:green"};
+  Figure fm;
+  fm.title = "Hydro stability map";
+  fm.caption =
+      "Each cell one hydro run of the table above: green, the solver reached the end; red, "
+      "CVODE failed (the table gives the flag).";
+  fm.xlabel = "Gamma";
+  fm.ylabel = "law, grid, tolerance";
+  fm.image.push_back(std::move(map));
+  fm.legend = false;
+  return fm;
+}
+
 }  // namespace
 
 void costSection(const WaveFrontsConfig&, const CostAccuracy& cost, Report& report) {
@@ -87,51 +151,9 @@ void failureSection(const WaveFrontsConfig& c, const FailureMap& m, Report& repo
       "lets a step overshoot into the vacuum above the layer or into the dense layer at impact; "
       "CV_TOO_MUCH_WORK / CV_CONV_FAILURE mean the stiff impact could not be resolved in the "
       "step budget.");
-  Table tp;
-  tp.title = "Particles without the TC model";
-  tp.columns = {"Gamma", "dry", "wet"};
-  Table th;
-  th.title = "Hydro solver over Gamma, grid and tolerance";
-  th.columns = {"Gamma"};
-  th.columns.insert(th.columns.end(), m.hydro_cases.begin(), m.hydro_cases.end());
-  Image map;
-  map.nx = static_cast<int>(c.fail_gammas.size());
-  map.ny = static_cast<int>(m.hydro_cases.size());
-  map.values.assign(static_cast<std::size_t>(map.nx * map.ny), NAN);
-  for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
-    std::vector<std::string> row{g(c.fail_gammas[i])};
-    for (const FailureCase& f : m.particles[i])
-      row.push_back(f.ok ? fmt::format("ran {:g} s, period {}", c.fail_duration, f.period)
-                         : shortReason(f.failure));
-    tp.rows.push_back(row);
-    std::vector<std::string> hrow{g(c.fail_gammas[i])};
-    for (std::size_t col = 0; col < m.hydro[i].size(); ++col) {
-      const FailureCase& f = m.hydro[i][col];
-      hrow.push_back(!f.ok        ? "fails: " + shortReason(f.failure)
-                     : f.periodic ? fmt::format("ok, period {}", f.period)
-                                  : fmt::format("ok, no period in {} cycles", f.cycles));
-      map.values[col * map.nx + i] = f.ok ? 1 : 0;
-    }
-    th.rows.push_back(hrow);
-  }
-  s.add(std::move(tp));
-  s.add(std::move(th));
-  Figure fm;
-  fm.title = "Hydro stability map";
-  fm.caption =
-      "Green: the solver reached the end (1); red: CVODE failed (0). Rows, bottom to top: the "
-      "columns of the table above, left to right.";
-  fm.xlabel = "case index along Gamma (see table)";
-  fm.ylabel = "grid / tolerance / law (table column)";
-  map.x0 = -0.5;
-  map.x1 = map.nx - 0.5;
-  map.y0 = 0.5;
-  map.y1 = map.ny + 0.5;
-  map.label = "solver succeeded";
-  map.cmap = "RdYlGn";
-  fm.image.push_back(std::move(map));
-  fm.legend = false;
-  s.add(std::move(fm));
+  s.add(particleFailureTable(c, m));
+  s.add(hydroFailureTable(c, m));
+  s.add(hydroFailureMap(c, m));
 }
 
 void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& report) {

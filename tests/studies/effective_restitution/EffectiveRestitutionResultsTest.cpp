@@ -38,8 +38,8 @@ constexpr int kRanges = 3;
 
 double sonineRateFactor(double e) {
   const double d = 2;
-  const double a2 = 16 * (1 - e) * (1 - 2 * e * e) /
-                    (9 + 24 * d - (41 - 8 * d) * e + 30 * (1 - e) * e * e);
+  const double a2 =
+      16 * (1 - e) * (1 - 2 * e * e) / (9 + 24 * d - (41 - 8 * d) * e + 30 * (1 - e) * e * e);
   return 1 + 3 * a2 / 16;
 }
 
@@ -65,8 +65,8 @@ TEST_F(EffectiveRestitutionResults, HaffFitOfSmoothDisksFollowsTheMaxwellAverage
       const double sonine = sonineRateFactor(std::sqrt(1 - phi));
       const double kappa_max = 2.5 * phi * std::stod(nu);
       EXPECT_GT(ratio, sonine * (1 - kappa_max) - 4 * sigma) << law << ", nu = " << nu;
-      EXPECT_LT(ratio, sonine + 4 * sigma) << law << ", nu = " << nu << ": T/T0 = " << T
-                                           << ", e_fit = " << e_fit;
+      EXPECT_LT(ratio, sonine + 4 * sigma)
+          << law << ", nu = " << nu << ": T/T0 = " << T << ", e_fit = " << e_fit;
     }
   }
 }

@@ -5,7 +5,8 @@ Usage: check_report.py REPORT.html
 
 Checks the DOM after scripts ran: every figure image decoded, every table has
 body rows each holding a number (or the reason a run failed), no empty cell or
-figure, at least one <h2>;
+figure, at least one <h2>, and no sideways scrolling in a 1280 px wide window
+(wide tables wrap);
 and that a screenshot shows something.  Exit 0 if all good, else 1 with one
 line per failure on stderr.
 """
@@ -20,6 +21,7 @@ from html.parser import HTMLParser
 
 NUMBER = re.compile(r"[-+]?\d+(\.\d+)?([eE][-+]?\d+)?")
 TIMEOUT_S = 120
+WINDOW = (1280, 1000)  # px, a laptop screen
 MIN_SCREENSHOT_BYTES = 10 * 1024
 
 
@@ -83,6 +85,7 @@ def run_chromium(chromium, tmp, name, output_arg, url):
     cmd = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
            "--no-first-run", "--disable-background-networking", "--disable-component-update",
            "--disable-sync", f"--user-data-dir={profile}", "--virtual-time-budget=5000",
+           f"--window-size={WINDOW[0]},{WINDOW[1]}",
            output_arg, url]
     proc = subprocess.run(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
                           stderr=subprocess.PIPE, timeout=TIMEOUT_S, check=False)
@@ -108,6 +111,13 @@ def check_dom(dom):
             failures.append(f"only {match[1]} of {match[2]} figure images loaded")
         elif int(match[2]) != n_img:
             failures.append(f'data-figures-loaded="{loaded}" but the DOM has {n_img} <img>')
+    width = dom.body_attrs.get("data-page-width")
+    match = re.fullmatch(r"(\d+)/(\d+)", width or "")
+    if not match:
+        failures.append(f'<body> has no usable data-page-width ("{width}")')
+    elif int(match[1]) > int(match[2]):
+        failures.append(f"the page is {match[1]} px wide in a {match[2]} px window: "
+                        "it scrolls sideways")
     tables_attr = dom.body_attrs.get("data-tables")
     if tables_attr is not None and tables_attr != str(len(dom.tables)):
         failures.append(f'data-tables="{tables_attr}" but the DOM has {len(dom.tables)} tables')
