@@ -14,8 +14,6 @@ namespace {
 
 const std::string kRoot = "/results/wave_fronts";
 
-std::string g(double v) { return formatCompact(v); }
-
 PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   PaperLaw out;
   std::vector<ImpactFronts> per_seed;
@@ -57,7 +55,7 @@ ParameterSweep wetSweep(const RunSet& runs, const std::string& key,
                         const std::vector<double>& values) {
   ParameterSweep sw{key, values, {}};
   for (double v : values) {
-    const std::string tag = fmt::format("{}={}", key, g(v));
+    const std::string tag = fmt::format("{}={}", key, formatCompact(v));
     sw.points.push_back(sweepPoint(runs, WaveFrontsConfig::particleRun(1, tag),
                                    WaveFrontsConfig::hydroRun(1, tag)));
   }
@@ -69,7 +67,8 @@ ParameterSweep wetSweep(const RunSet& runs, const std::string& key,
 CostAccuracy costAccuracy(const WaveFrontsConfig& c, const RunSet& runs, const PaperLaw& wet) {
   CostAccuracy out;
   for (double dur : c.cost_durations) {
-    const std::string label = WaveFrontsConfig::particleRun(1, fmt::format("{} s", g(dur)));
+    const std::string label =
+        WaveFrontsConfig::particleRun(1, fmt::format("{} s", formatCompact(dur)));
     auto p = particleFields(runs, label);
     if (!p) continue;
     CostRow row;

@@ -15,8 +15,6 @@ namespace granwave {
 
 namespace {
 
-std::string g(double v) { return formatCompact(v); }
-
 // A particle model over the study's seeds ("" the full model, "constant e ", "no rotation "):
 // the combined front speed, the periods of the seeds and their most frequent value (0: none).
 int overSeeds(const WaveFrontsConfig& c, const RunSet& runs, int law, const std::string& tag,
@@ -55,8 +53,8 @@ void judge(const ModelHierarchy& m, ModelCandidate& c, int period) {
 
 FailureCase particleFailure(const RunSet& runs, int law, double gamma) {
   FailureCase f;
-  const RunRecord& r =
-      runs.get(WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", g(gamma))));
+  const RunRecord& r = runs.get(
+      WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))));
   f.ok = r.ok;
   if (r.ok) {
     f.period = readParticleFields(r.fieldsPath()).layer_period;

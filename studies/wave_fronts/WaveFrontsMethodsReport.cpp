@@ -13,8 +13,6 @@ namespace granwave {
 
 namespace {
 
-std::string g(double v) { return formatCompact(v); }
-
 Table costTable(const CostAccuracy& cost) {
   Table t;
   t.title = "Runs of the cost-accuracy chart";
@@ -42,7 +40,7 @@ Table particleFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
   t.title = "Particles without the TC model";
   t.columns = {"Gamma", "dry", "wet"};
   for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
-    std::vector<std::string> row{g(c.fail_gammas[i])};
+    std::vector<std::string> row{formatCompact(c.fail_gammas[i])};
     for (const FailureCase& f : m.particles[i])
       row.push_back(f.ok ? fmt::format("ran {:g} s, period {}", c.fail_duration, f.period)
                          : shortReason(f.failure));
@@ -57,7 +55,7 @@ Table hydroFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
   Table t;
   t.title = "Hydro solver over Gamma, grid and tolerance";
   t.columns = {"law, grid, tolerance"};
-  for (double gamma : c.fail_gammas) t.columns.push_back("Gamma = " + g(gamma));
+  for (double gamma : c.fail_gammas) t.columns.push_back("Gamma = " + formatCompact(gamma));
   for (std::size_t k = 0; k < m.hydro_cases.size(); ++k) {
     std::vector<std::string> row{m.hydro_cases[k]};
     for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
@@ -84,7 +82,7 @@ Figure hydroFailureMap(const WaveFrontsConfig& c, const FailureMap& m) {
   map.x1 = map.nx - 0.5;
   map.y0 = -0.5;
   map.y1 = map.ny - 0.5;
-  for (double gamma : c.fail_gammas) map.x_labels.push_back(g(gamma));
+  for (double gamma : c.fail_gammas) map.x_labels.push_back(formatCompact(gamma));
   map.y_labels = m.hydro_cases;
   map.label = "CVODE outcome";
   map.category_labels = {"failed", "reached the end"};

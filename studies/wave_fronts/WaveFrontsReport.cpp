@@ -13,8 +13,6 @@ namespace granwave {
 
 namespace {
 
-std::string g(double v) { return formatCompact(v); }
-
 Series frontSeries(const Profiles& p, double d, std::string label, std::string color,
                    std::string marker) {
   std::vector<double> y;
@@ -278,7 +276,7 @@ void wetLawSection(const WaveFrontsResults& r, Report& report) {
     fw.ylabel = "front speed (m/s, lab)";
     for (std::size_t i = 0; i < sw.values.size(); ++i) {
       const SweepPoint& p = sw.points[i];
-      tw.rows.push_back({sw.key, g(sw.values[i]), format(p.ed), hydroCell(p),
+      tw.rows.push_back({sw.key, formatCompact(sw.values[i]), format(p.ed), hydroCell(p),
                          p.layer_period >= 0 ? std::to_string(p.layer_period) : "–"});
     }
     std::vector<double> y, e, yh, eh;

@@ -16,8 +16,6 @@ namespace granwave {
 
 namespace {
 
-std::string g(double v) { return formatCompact(v); }
-
 // The LAMMPS executable: a path, or a name looked up on PATH; empty if not found.
 std::string findProgram(const std::string& exe) {
   if (exe.find('/') != std::string::npos) return std::filesystem::exists(exe) ? exe : "";
@@ -32,11 +30,12 @@ std::string findProgram(const std::string& exe) {
 }  // namespace
 
 std::string WaveFrontsConfig::failureHydroRun(int law, double gamma, int cells, double rtol) {
-  return hydroRun(law, fmt::format("Gamma={} {} cells rtol {}", g(gamma), cells, g(rtol)));
+  return hydroRun(law, fmt::format("Gamma={} {} cells rtol {}", formatCompact(gamma), cells,
+                                   formatCompact(rtol)));
 }
 
 std::string WaveFrontsConfig::costHydroRun(int cells, double rtol) {
-  return hydroRun(1, fmt::format("{} cells rtol {}", cells, g(rtol)));
+  return hydroRun(1, fmt::format("{} cells rtol {}", cells, formatCompact(rtol)));
 }
 
 std::string WaveFrontsConfig::lammpsRun() const {
@@ -83,7 +82,8 @@ void WaveFrontsStudy::readKeys(StudyFile& f) {
 RunRequest& WaveFrontsStudy::add(const StudyFile& f, RunKind kind, int law,
                                  const std::string& label, std::vector<std::string> overrides,
                                  double duration) {
-  if (kind == RunKind::Particles) overrides.push_back(fmt::format("run.duration={}", g(duration)));
+  if (kind == RunKind::Particles)
+    overrides.push_back(fmt::format("run.duration={}", formatCompact(duration)));
   RunRequest q = runRequest(kind, label, c_.scenes.scene(f, law, overrides));
   q.window_cycles = c_.window;
   q.blocks = c_.blocks;
@@ -113,14 +113,17 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   // runs is a result, and the progress lines say so.
   const std::string expected = "expected failure (failure map)";
   for (double gamma : c_.fail_gammas) {
-    const std::string drive = fmt::format("drive.gamma={}", g(gamma));
-    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("no TC Gamma={}", g(gamma))),
+    const std::string drive = fmt::format("drive.gamma={}", formatCompact(gamma));
+    add(f, RunKind::Particles, law,
+        C::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))),
         {"contact.tc=\"off\"", drive, seed1}, c_.fail_duration)
         .failure_note = expected;
     for (int cells : c_.fail_cells)
       for (double rtol : c_.fail_rtol)
         add(f, RunKind::Hydro, law, C::failureHydroRun(law, gamma, cells, rtol),
-            {drive, fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", g(rtol))}, 0)
+            {drive, fmt::format("hydro.cells={}", cells),
+             fmt::format("hydro.rtol={}", formatCompact(rtol))},
+            0)
             .failure_note = expected;
   }
   // Simpler models than the full particle model, with the same seeds (the wet layer's
@@ -143,18 +146,21 @@ void WaveFrontsStudy::planWetSweeps(const StudyFile& f) {
   const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
   for (const auto& [key, values] : {std::pair{"St_c", c_.stokes}, std::pair{"e_inf", c_.e_inf}})
     for (double v : values) {
-      const std::string tag = fmt::format("{}={}", key, g(v));
-      const std::string set = fmt::format(
-          "contact.{}={}", std::string(key) == "St_c" ? "stokes_critical" : "e_inf", g(v));
+      const std::string tag = fmt::format("{}={}", key, formatCompact(v));
+      const std::string set =
+          fmt::format("contact.{}={}", std::string(key) == "St_c" ? "stokes_critical" : "e_inf",
+                      formatCompact(v));
       add(f, RunKind::Particles, 1, C::particleRun(1, tag), {set, seed1}, c_.sweep_duration);
       add(f, RunKind::Hydro, 1, C::hydroRun(1, tag), {set}, 0);
     }
   for (double d : c_.cost_durations)
-    add(f, RunKind::Particles, 1, C::particleRun(1, fmt::format("{} s", g(d))), {seed1}, d);
+    add(f, RunKind::Particles, 1, C::particleRun(1, fmt::format("{} s", formatCompact(d))), {seed1},
+        d);
   for (int cells : c_.cost_cells)
     for (double rtol : c_.cost_rtol)
       add(f, RunKind::Hydro, 1, C::costHydroRun(cells, rtol),
-          {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", g(rtol))}, 0);
+          {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", formatCompact(rtol))},
+          0);
 }
 
 WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) {
@@ -195,7 +201,8 @@ void WaveFrontsStudy::addLammps(StudyFile& f) {
   q.program = program;
   q.deck_path = c_.lammps_deck;
   q.deck_text = text.str();
-  q.variables = {"duration", g(c_.lammps_duration), "seed", std::to_string(c_.lammps_seed)};
+  q.variables = {"duration", formatCompact(c_.lammps_duration), "seed",
+                 std::to_string(c_.lammps_seed)};
   requests_.push_back(std::move(q));
   c_.lammps = true;
 }
