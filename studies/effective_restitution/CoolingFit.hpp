@@ -1,6 +1,8 @@
 #pragma once
 // Effective restitution from free cooling (Haff's law) of a homogeneous gas of disks.
-// Kinetic theory (physics-hydro.md 1.4; hydro/TransportCoefficients.hpp) gives
+// Kinetic theory (Haff, J. Fluid Mech. 134, 401 (1983); Enskog cooling rate of inelastic
+// disks, e.g. Brilliantov & Poeschel, Kinetic Theory of Granular Gases (2004), ch. 6;
+// hydro/TransportCoefficients.hpp) gives
 //     d theta / dt = -zeta theta,   zeta = sqrt(pi) Phi_W(theta) g2(nu) n sigma sqrt(theta),
 // so for a constant Phi_W = 1 - e^2, theta^{-1/2} grows linearly in time with slope
 //     s = (1/2) sqrt(pi) Phi_W g2(nu) n sigma.
