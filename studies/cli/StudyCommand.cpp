@@ -59,6 +59,58 @@ void renderReport(const std::string& results, const std::string& html, const std
   }
 }
 
+// A run that did not finish (killed, could not start) is not a result: no results.h5.
+void requireFinished(const RunSet& runs, const std::string& cache_dir) {
+  int unfinished = 0;
+  std::string example;
+  for (const RunRecord& r : runs.all())
+    if (!r.ok && r.message.find("(not cached)") != std::string::npos) {
+      ++unfinished;
+      if (example.empty()) example = r.request.label + ": " + r.message;
+    }
+  if (unfinished > 0)
+    throw std::runtime_error(fmt::format(
+        "{} run(s) did not finish ({}); finished runs are kept in {}: run the same command "
+        "again",
+        unfinished, example, cache_dir));
+}
+
+// results.h5 (layout: docs/studies.md), atomically: the study's numbers and report, the runs'
+// cost, the provenance. An interrupt during the analysis commits nothing; the runs stay cached.
+void writeResults(const std::string& path, const Study& study, const StudyFile& file,
+                  const RunSet& runs, const std::string& build_id) {
+  h5::AtomicFile af(path);
+  h5::File& f = af.file();
+  Report report;
+  report.title = study.title();
+  f.createGroup("/results");
+  study.analyse(runs, f, report);
+  writeRunCosts(runs, f, report);
+  f.writeStringAttribute("/", "format", "granwave-study-1");
+  f.writeStringAttribute("/", "study", file.kind());
+  f.writeStringAttribute("/", "title", report.title);
+  f.writeStringAttribute("/", "summary", report.summary);
+  f.writeStringAttribute("/", "granwave_version", kVersion);
+  f.writeStringAttribute("/", "build_id", build_id);
+  const SourceCommit source = sourceCommit();
+  f.writeStringAttribute("/", "source_commit", source.commit);
+  f.writeStringAttribute("/", "source_tree", source.tree);
+  f.writeStringDataset("/study_file", file.text());
+  writeReport(f, report);
+  if (installInterruptFlag().load())
+    throw StudyInterrupted("interrupted during the analysis; run the same command again");
+  af.commit();
+}
+
+// Runs at a time: -j, else [study] jobs, else one per rank under mpirun, else every core.
+int jobsOf(const StudyOptions& opt, int file_jobs, const MpiSession& mpi) {
+  int jobs = opt.jobs > 0 ? opt.jobs : file_jobs;
+  // Under mpirun each rank is meant to have a core of its own: one run at a time per rank.
+  if (jobs <= 0 && mpi.size() > 1) jobs = 1;
+  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  return jobs;
+}
+
 }  // namespace
 
 void addStudyCommand(CLI::App& app, StudyOptions& opt) {
@@ -87,12 +139,9 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
 int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   StudyFile file = StudyFile::load(opt.study_path);
   const std::unique_ptr<Study> study = makeStudy(file);
-  int jobs = file.integer("study", "jobs", 0);
+  const int file_jobs = file.integer("study", "jobs", 0);
   file.rejectUnknownKeys();
-  if (opt.jobs > 0) jobs = opt.jobs;
-  // Under mpirun each rank is meant to have a core of its own: one run at a time per rank.
-  if (jobs <= 0 && mpi.size() > 1) jobs = 1;
-  if (jobs <= 0) jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs = jobsOf(opt, file_jobs, mpi);
   const std::vector<RunRequest> plan = study->plan();
 
   std::string outdir = opt.output;
@@ -115,46 +164,10 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
                                                 : std::pair<double, double>{0.0, 0.0};
   };
   const RunSet runs(runAll(plan, cache, scheduling, mpi.size() > 1 ? &remote : nullptr));
-  // A run that did not finish (killed, could not start) is not a result: no results.h5.
-  int unfinished = 0;
-  std::string example;
-  for (const RunRecord& r : runs.all())
-    if (!r.ok && r.message.find("(not cached)") != std::string::npos) {
-      ++unfinished;
-      if (example.empty()) example = r.request.label + ": " + r.message;
-    }
-  if (unfinished > 0)
-    throw std::runtime_error(fmt::format(
-        "{} run(s) did not finish ({}); finished runs are kept in {}: run the same command "
-        "again",
-        unfinished, example, cache_dir));
-
+  requireFinished(runs, cache_dir);
   const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
   const std::string html = (std::filesystem::path(outdir) / "report.html").string();
-  {
-    h5::AtomicFile af(results);
-    h5::File& f = af.file();
-    Report report;
-    report.title = study->title();
-    f.createGroup("/results");
-    study->analyse(runs, f, report);
-    writeRunCosts(runs, f, report);
-    f.writeStringAttribute("/", "format", "granwave-study-1");
-    f.writeStringAttribute("/", "study", file.kind());
-    f.writeStringAttribute("/", "title", report.title);
-    f.writeStringAttribute("/", "summary", report.summary);
-    f.writeStringAttribute("/", "granwave_version", kVersion);
-    f.writeStringAttribute("/", "build_id", build_id);
-    const SourceCommit source = sourceCommit();
-    f.writeStringAttribute("/", "source_commit", source.commit);
-    f.writeStringAttribute("/", "source_tree", source.tree);
-    f.writeStringDataset("/study_file", file.text());
-    writeReport(f, report);
-    // An interrupt during the analysis: nothing is committed; the runs stay cached.
-    if (installInterruptFlag().load())
-      throw StudyInterrupted("interrupted during the analysis; run the same command again");
-    af.commit();
-  }
+  writeResults(results, *study, file, runs, build_id);
   if (!opt.no_report)
     renderReport(results, html, (std::filesystem::path(outdir) / "report.log").string());
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
