@@ -273,7 +273,9 @@ def render_figure(item):
     if get_float(item, "legend", 1) and ax.get_legend_handles_labels()[0]:
         place_legend(fig, ax, get_float(item, "legend_outside", 0))
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110)
+    # A colour bar's tick labels (category names) can reach past the tight layout: keep them.
+    extra = {"bbox_inches": "tight", "pad_inches": 0.05} if ax.images else {}
+    fig.savefig(buf, format="png", dpi=110, **extra)
     png = base64.b64encode(buf.getvalue()).decode("ascii")
     return (f'<figure><img src="data:image/png;base64,{png}" alt="{html.escape(title)}">\n'
             f"<figcaption>{bold_title(title)} {html.escape(caption)}</figcaption></figure>\n")
