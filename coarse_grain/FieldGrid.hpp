@@ -1,5 +1,5 @@
 #pragma once
-// The lab-frame grid of the coarse-graining (paper, Sec. IV; coarse-graining.md):
+// The lab-frame grid of the coarse-graining (paper, Sec. IV; docs/fields.md, "Definitions"):
 // N_x = L_x / d columns, N_z = ceil((L_z + 2A) / d) rows of side d, covering z from -A
 // (the lowest plate position) to -A + N_z d >= L_z + A.
 #include <algorithm>

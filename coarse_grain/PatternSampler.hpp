@@ -1,5 +1,5 @@
 #pragma once
-// Pattern and state classification of a run (coarse-graining.md; docs/classification.md):
+// Pattern and state classification of a run (docs/classification.md):
 // an observer keeps the snapshots of the last `keep_cycles` steady cycles at
 // `samples_per_cycle` phases; classification then looks at the phase where the centre of
 // mass is highest (the free flight, where the paper inspects the layer), across those

@@ -1,6 +1,6 @@
 #pragma once
 // Period of a driven layer from its centre-of-mass height h(t), sampled M times per drive
-// cycle (coarse-graining.md, "Pattern and state classification").
+// cycle (docs/classification.md, "Period").
 //
 // Over K whole cycles the spectrum of h has the drive's harmonics at bins K, 2K, ... and a
 // period-p motion adds the subharmonics j K / p (j not a multiple of p). K is trimmed to a

@@ -1,6 +1,6 @@
 #pragma once
 // Phase-averaged continuum fields from pooled particle sums (paper Sec. IV;
-// coarse-graining.md), for one block of cycles or all of them:
+// docs/fields.md, "Definitions"), for one block of cycles or all of them:
 //   n(i,j)        pooled count; area fraction nu = (n / snapshots) (pi d^2/4) / (w_x w_z)
 //   v~(i,j)       mean velocity of the pooled particles
 //   T_g(i,j)      m sum_k (v_k - v~)^2 / (2 n): fluctuation kinetic energy per particle
@@ -8,7 +8,7 @@
 // valid only where n >= min_count (the paper's n >= 3). Profiles per row j:
 //   T~_g(z_j)  = <T_g(i,j)>_i,   v~_z(z_j) = <v~_z(i,j)>_i   over valid cells;
 //   RMS(v_x)(z_j) = sqrt(<(v~_x(i,j) - <v~_x>_i)^2>_i)   (the square root is meant: see
-//   coarse-graining.md);  nu(z_j) = <nu(i,j)>_i over all cells; centre-of-mass height.
+//   docs/fields.md);  nu(z_j) = <nu(i,j)>_i over all cells; centre-of-mass height.
 #include <limits>
 #include <vector>
 

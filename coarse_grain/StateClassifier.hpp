@@ -1,6 +1,7 @@
 #pragma once
 // Crystal / amorphous / liquid-like state of a vibrated layer (paper Sec. III, stability
-// diagram Fig. 3: triangles, circles, crosses; coarse-graining.md, "Solid vs fluid").
+// diagram Fig. 3: triangles, circles, crosses; docs/classification.md, "Crystal, amorphous,
+// liquid-like").
 //
 // The paper classifies by eye: "crystalline and amorphous states are distinguished from
 // whether the particles are caged in a crystalline or a random configuration. In a

@@ -1,6 +1,6 @@
 #pragma once
-// Surface height h(x) of a vibrated layer in one snapshot (coarse-graining.md, "Pattern and
-// state classification"; paper Sec. III, Fig. 2).
+// Surface height h(x) of a vibrated layer in one snapshot (docs/classification.md, "Surface
+// height h(x)"; paper Sec. III, Fig. 2).
 //
 // The container [0, L_x] is cut into n_columns columns of width w = L_x / n_columns (default:
 // n_columns = round(L_x / d), one particle diameter each, the same columns as the field grid).

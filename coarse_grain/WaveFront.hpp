@@ -1,18 +1,18 @@
 #pragma once
 // Wave fronts after the impacts of the layer on the plate (paper Sec. IV, Fig. 5;
-// coarse-graining.md). At each phase the front is the height of the peak of T~_g(z) where
-// T~_g / T0 > 0.5 (T0 = m v0^2 / 2), refined between rows by a parabola through the peak and
-// its neighbours. Only rows of the layer count (row area fraction >= layer_min_area_fraction):
-// the few ballistic particles of the dilute gas above the layer have T~_g of several T0 and
-// would otherwise be taken for a front (granwave's resolution; docs/fields.md). A front episode is
-// a maximal run of consecutive phases (cyclic over the window) with a front; its speed is the slope
-// of a straight-line fit of front height vs time. The uncertainty combines the fit's standard error
-// with the spread of the same fit over independent blocks of cycles: sqrt(s_fit^2 + s_blocks^2),
-// s_blocks = std(block slopes)/sqrt(blocks). The speed relative to the gas ahead subtracts the mean
-// vertical velocity of the layer above the front (rows more than one diameter above it, weighted by
-// area fraction), averaged over the episode. Fronts are waves launched by an impact: an
-// episode counts as one only if it starts within `impact_max_rows` rows of the plate; hot spots
-// elsewhere (the top of the layer during free flight) are kept but flagged.
+// docs/fields.md, "Definitions"). At each phase the front is the height of the peak of
+// T~_g(z) where T~_g / T0 > 0.5 (T0 = m v0^2 / 2), refined between rows by a parabola through the
+// peak and its neighbours. Only rows of the layer count (row area fraction >=
+// layer_min_area_fraction): the few ballistic particles of the dilute gas above the layer have T~_g
+// of several T0 and would otherwise be taken for a front (granwave's resolution; docs/fields.md). A
+// front episode is a maximal run of consecutive phases (cyclic over the window) with a front; its
+// speed is the slope of a straight-line fit of front height vs time. The uncertainty combines the
+// fit's standard error with the spread of the same fit over independent blocks of cycles:
+// sqrt(s_fit^2 + s_blocks^2), s_blocks = std(block slopes)/sqrt(blocks). The speed relative to the
+// gas ahead subtracts the mean vertical velocity of the layer above the front (rows more than one
+// diameter above it, weighted by area fraction), averaged over the episode. Fronts are waves
+// launched by an impact: an episode counts as one only if it starts within `impact_max_rows` rows
+// of the plate; hot spots elsewhere (the top of the layer during free flight) are kept but flagged.
 #include <vector>
 
 #include "coarse_grain/PhaseFields.hpp"

@@ -10,7 +10,9 @@ cd "$(dirname "$0")/.."
 packages=(build-essential cmake pkg-config
           libeigen3-dev libsundials-dev libfftw3-dev libhdf5-dev hdf5-tools
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev libfmt-dev
-          python3-matplotlib python3-h5py python3-numpy chromium libopenmpi-dev openmpi-bin)
+          python3-matplotlib python3-h5py python3-numpy chromium libopenmpi-dev openmpi-bin
+          git clang-format python3-clang-14
+          paraview python3-paraview python3-mdanalysis python3-ase)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

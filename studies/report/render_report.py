@@ -17,7 +17,9 @@ import matplotlib
 import numpy as np
 
 matplotlib.use("Agg")
-from matplotlib.figure import Figure  # noqa: E402  (after the backend is chosen)
+import matplotlib.colors  # noqa: E402  (after the backend is chosen)
+from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
+from matplotlib.figure import Figure  # noqa: E402
 
 FORMAT = "granwave-study-1"
 REQUIRED = object()  # sentinel default: the attribute must be present
@@ -26,8 +28,9 @@ NUMERIC = re.compile(r"\s*[-+\u2212]?(\d+\.?\d*|\.\d+)([eE][-+\u2212]?\d+)?(\s*(
                      re.IGNORECASE)
 CSS = """body{font-family:system-ui,"Segoe UI",Roboto,"DejaVu Sans",sans-serif;max-width:1000px;
 margin:2em auto;padding:0 1em;line-height:1.5;color:#222}h2{border-bottom:1px solid #ccc}
-.provenance{color:#666;font-size:.85em}table{border-collapse:collapse;margin:1em 0}caption{
-text-align:left;padding:.3em 0}th,td{border:1px solid #bbb;padding:.25em .6em}th{background:#eee}
+.provenance{color:#666;font-size:.85em}table{border-collapse:collapse;margin:1em 0;max-width:100%}
+caption{text-align:left;padding:.3em 0}th,td{border:1px solid #bbb;padding:.25em .6em;
+overflow-wrap:anywhere}th{background:#eee}
 td.num{text-align:right;font-variant-numeric:tabular-nums}figure{margin:1.5em 0}figure img{
 max-width:100%}figcaption{font-size:.92em;color:#333}"""
 JS = """window.addEventListener("load", function () {
@@ -35,6 +38,8 @@ JS = """window.addEventListener("load", function () {
   for (var i = 0; i < imgs.length; i++) if (imgs[i].complete && imgs[i].naturalWidth > 0) loaded++;
   document.body.setAttribute("data-figures-loaded", loaded + "/" + imgs.length);
   document.body.setAttribute("data-tables", String(document.getElementsByTagName("table").length));
+  var page = document.documentElement;  // a page wider than the window scrolls sideways
+  document.body.setAttribute("data-page-width", page.scrollWidth + "/" + page.clientWidth);
 });"""
 
 
@@ -158,20 +163,92 @@ def draw_series(ax, s):
         raise InputError(f"{s.name}: unknown style '{style}'")
 
 
+def strings(node, name):
+    """Optional string-array attribute as a list of str (empty when absent)."""
+    value = attr(node, name, None)
+    return [] if value is None else [as_str(v) for v in np.atleast_1d(value).ravel()]
+
+
 def draw_image(fig, ax, img):
-    """Draw the optional `image` group of a figure, with its colour bar."""
+    """Draw the optional `image` group of a figure: a colour bar for a continuous scale, one
+    colour per category with a key for a discrete one (e.g. failed / reached the end)."""
     extent = [get_float(img, k, REQUIRED) for k in ("x0", "x1", "y0", "y1")]
-    im = ax.imshow(get_data(img, "values", ndim=2), origin="lower", extent=extent,
-                   aspect="auto", interpolation="nearest",
-                   cmap=as_str(attr(img, "cmap", "viridis")),
-                   vmin=get_float(img, "vmin"), vmax=get_float(img, "vmax"))
-    fig.colorbar(im, ax=ax, label=as_str(attr(img, "label", "")))
+    values = get_data(img, "values", ndim=2)
+    labels, colors = strings(img, "category_labels"), strings(img, "category_colors")
+    kw = {"cmap": as_str(attr(img, "cmap", "viridis")),
+          "vmin": get_float(img, "vmin"), "vmax": get_float(img, "vmax")}
+    if labels:
+        if len(colors) != len(labels):
+            raise InputError(f"{img.name}: {len(labels)} category labels, {len(colors)} colours")
+        kw = {"cmap": matplotlib.colors.ListedColormap(colors),
+              "norm": matplotlib.colors.BoundaryNorm(np.arange(len(labels) + 1) - 0.5,
+                                                     len(labels))}
+    im = ax.imshow(values, origin="lower", extent=extent, aspect="auto",
+                   interpolation="nearest", **kw)
+    bar = fig.colorbar(im, ax=ax, label="" if labels else as_str(attr(img, "label", "")))
+    if labels:
+        bar.set_ticks(np.arange(len(labels)), labels=labels)
+
+
+def label_cells(ax, img):
+    """The names of an image's columns and rows as tick labels at their centres (after the
+    axis scales are set: setting a scale resets the ticks)."""
+    extent = [get_float(img, k, REQUIRED) for k in ("x0", "x1", "y0", "y1")]
+    values = get_data(img, "values", ndim=2)
+    for name, count, (lo, hi), set_ticks in (
+            ("x_labels", values.shape[1], extent[:2], ax.set_xticks),
+            ("y_labels", values.shape[0], extent[2:], ax.set_yticks)):
+        names = strings(img, name)
+        if not names:
+            continue
+        if len(names) != count:
+            raise InputError(f"{img.name}: {len(names)} {name} for {count} cells")
+        set_ticks(lo + (np.arange(count) + 0.5) * (hi - lo) / count, labels=names)
+
+
+def covers_data(fig, ax, legend):
+    """True if the legend box hides a data point, a point along a drawn line, or an image."""
+    if ax.images:
+        return True
+    renderer = fig.canvas.get_renderer()
+    box = legend.get_window_extent(renderer).padded(2)
+    points = []
+    for line in ax.lines:
+        xy = line.get_transform().transform(line.get_xydata())
+        if len(xy) > 1 and line.get_linestyle() not in ("None", "none", ""):
+            t = np.linspace(0, 1, 12)[:, None, None]  # points along every segment
+            xy = (xy[:-1] * (1 - t) + xy[1:] * t).reshape(-1, 2)
+        points.append(xy)
+    for coll in ax.collections:
+        for path in coll.get_paths():
+            points.append(coll.get_transform().transform(path.vertices))
+        offsets = coll.get_offsets()
+        if len(offsets):
+            points.append(coll.get_offset_transform().transform(offsets))
+    for patch in ax.patches:  # bars
+        points.append(patch.get_transform().transform(patch.get_path().vertices))
+    xy = np.concatenate(points) if points else np.empty((0, 2))
+    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    return bool(np.any((xy[:, 0] >= box.x0) & (xy[:, 0] <= box.x1) &
+                       (xy[:, 1] >= box.y0) & (xy[:, 1] <= box.y1)))
+
+
+def place_legend(fig, ax, outside):
+    """Inside the axes where it hides no data (matplotlib's "best" place), else beside them."""
+    if not outside:
+        legend = ax.legend()
+        fig.canvas.draw()
+        if not covers_data(fig, ax, legend):
+            return
+        legend.remove()
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
 
 
 def render_figure(item):
     """Draw a figure item with matplotlib and return its <figure> HTML (PNG inline)."""
     title, caption = (as_str(attr(item, k)) for k in ("title", "caption"))
     fig = Figure(figsize=(7, 4.2), dpi=110, layout="tight")
+    FigureCanvasAgg(fig)  # a canvas to measure the legend against the data
     ax = fig.add_subplot()
     ax.set_xlabel(as_str(attr(item, "xlabel")))
     ax.set_ylabel(as_str(attr(item, "ylabel")))
@@ -181,6 +258,8 @@ def render_figure(item):
         draw_series(ax, series)
     ax.set_xscale(as_str(attr(item, "xscale", "linear")))
     ax.set_yscale(as_str(attr(item, "yscale", "linear")))
+    if isinstance(item.get("image"), h5py.Group):
+        label_cells(ax, item["image"])
     for name, set_lim in (("xlim", ax.set_xlim), ("ylim", ax.set_ylim)):
         lim = get_nums(item, name)
         if lim is not None and len(lim) != 2:
@@ -189,14 +268,14 @@ def render_figure(item):
             set_lim(lim[0], lim[1])
     if get_float(item, "invert_y", 0):
         ax.invert_yaxis()
-    ax.grid(True, alpha=0.3)
+    if not isinstance(item.get("image"), h5py.Group):
+        ax.grid(True, alpha=0.3)
     if get_float(item, "legend", 1) and ax.get_legend_handles_labels()[0]:
-        if get_float(item, "legend_outside", 0):  # beside the axes: diagrams fill them
-            ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
-        else:
-            ax.legend()
+        place_legend(fig, ax, get_float(item, "legend_outside", 0))
     buf = io.BytesIO()
-    fig.savefig(buf, format="png", dpi=110)
+    # A colour bar's tick labels (category names) can reach past the tight layout: keep them.
+    extra = {"bbox_inches": "tight", "pad_inches": 0.05} if ax.images else {}
+    fig.savefig(buf, format="png", dpi=110, **extra)
     png = base64.b64encode(buf.getvalue()).decode("ascii")
     return (f'<figure><img src="data:image/png;base64,{png}" alt="{html.escape(title)}">\n'
             f"<figcaption>{bold_title(title)} {html.escape(caption)}</figcaption></figure>\n")
@@ -234,13 +313,24 @@ def render_item(item):
     raise InputError(f"{item.name}: unknown item type '{kind}'")
 
 
+def source_line(h5):
+    """The commit the program was built from, and whether its working tree was clean."""
+    commit = html.escape(as_str(attr(h5, "source_commit", "unknown")))
+    tree = as_str(attr(h5, "source_tree", "unknown"))
+    if commit == "unknown":
+        return "source commit unknown"
+    note = {"clean": "", "with uncommitted changes": " (built with uncommitted changes)"}
+    return f"source commit <code>{commit}</code>" + note.get(tree, " (working tree unknown)")
+
+
 def render_page(h5):
     """Return the complete HTML page for an open results file."""
     fmt = as_str(attr(h5, "format", ""))
     if fmt != FORMAT:
         raise InputError(f"format is '{fmt}', expected '{FORMAT}'")
-    title, study, version, build = (html.escape(as_str(attr(h5, k))) for k in
-                                    ("title", "study", "granwave_version", "build_id"))
+    title, study, version = (html.escape(as_str(attr(h5, k))) for k in
+                             ("title", "study", "granwave_version"))
+    source = source_line(h5)
     if not isinstance(h5.get("report/sections"), h5py.Group):
         raise InputError("missing group /report/sections")
     toc, body = [], []
@@ -256,7 +346,7 @@ def render_page(h5):
             f"<title>{title}</title>\n<style>{CSS}</style></head>\n<body>\n<h1>{title}</h1>\n"
             + paragraphs(as_str(attr(h5, "summary", "")))
             + f'<p class="provenance">Study <code>{study}</code> &middot; granwave {version}'
-            f" &middot; build {build}</p>\n<nav><h3>Contents</h3><ol>\n{''.join(toc)}</ol></nav>\n"
+            f" &middot; {source}</p>\n<nav><h3>Contents</h3><ol>\n{''.join(toc)}</ol></nav>\n"
             + "".join(body) + f"<script>\n{JS}\n</script>\n</body></html>\n")
 
 

@@ -1,5 +1,5 @@
 // Defaults and derived quantities against the paper (Huang et al., Methods and Table I;
-// shared/design/physics-particles.md): q = rho d / (9 eta) = 573.3 s/m,
+// docs/scenes.md): q = rho d / (9 eta) = 573.3 s/m,
 // v_c = St_c / q = 0.0698 m/s, A = Gamma g / (2 pi f)^2 = 9.94 mm, v0 = A 2 pi f,
 // t_c = 2.94 (m/k)^(2/5) v0^(-1/5) ~ 9.2 us at f = 10 Hz, Gamma = 4.
 #include <gtest/gtest.h>

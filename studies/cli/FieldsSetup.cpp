@@ -1,0 +1,82 @@
+#include "studies/cli/FieldsSetup.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "scene/SceneDerived.hpp"
+
+namespace granwave {
+
+PhaseAveragerConfig phaseAveragerConfig(const Scene& s, int P, int blocks, int fixed_discard) {
+  if (s.drive.frequency <= 0)
+    throw std::invalid_argument("phase-averaged fields need a driven scene (drive.frequency > 0)");
+  const SceneDerived dv = derive(s);
+  PhaseAveragerConfig c;
+  c.grid = FieldGrid::forContainer(s.container.width, s.container.height, dv.amplitude,
+                                   s.particles.diameter);
+  c.samples_per_cycle = s.run.phases_per_cycle;
+  c.cycles_per_window = P;
+  c.blocks = blocks;
+  c.total_cycles = static_cast<int>(std::floor(s.run.duration * s.drive.frequency + 1e-9));
+  c.fixed_discard = fixed_discard;
+  return c;
+}
+
+FieldsContext fieldsContext(const Scene& s, const std::string& source,
+                            const std::string& scene_toml, int layer_period) {
+  const SceneDerived dv = derive(s);
+  FieldsContext c;
+  c.diameter = s.particles.diameter;
+  c.mass = dv.mass;
+  c.inertia = dv.inertia;
+  c.frequency = s.drive.frequency;
+  c.amplitude = dv.amplitude;
+  c.T0 = dv.T0;
+  c.layer_period = layer_period;
+  c.source = source;
+  c.scene_toml = scene_toml;
+  return c;
+}
+
+std::string formatFieldsSummary(const FieldsAnalysis& a) {
+  std::string r;
+  r += fmt::format("fields          {} x {} cells of {:.3g} m, {} phases ({} cycles x M = {})\n",
+                   a.grid.nx, a.grid.nz, a.grid.wz, a.pooled.phases, a.cycles_per_window,
+                   a.samples_per_cycle);
+  r += fmt::format("pooled          {} steady cycles in {} blocks, {} transient cycles discarded\n",
+                   a.pooled_cycles, a.blocks, a.discarded_cycles);
+  int impact_fronts = 0;
+  for (const FrontEpisode& e : a.fronts) impact_fronts += e.from_impact;
+  if (impact_fronts == 0)
+    r += "fronts          none after an impact with T~_g/T0 > threshold over 3 or more phases\n";
+  if (static_cast<int>(a.fronts.size()) > impact_fronts)
+    r += fmt::format(
+        "hot spots       {} episode(s) of T~_g/T0 > threshold away from the plate "
+        "(not impact fronts; in the file with from_impact = 0)\n",
+        a.fronts.size() - impact_fronts);
+  if (a.patterns.available) {
+    const PatternResult& p = a.patterns;
+    r += fmt::format(
+        "patterns        at t/T = {:.1f} over the last {} cycles: {}; surface wave {} (mode {}, "
+        "{:.2f} d, alternation {:.2f}); {} kink(s); <|psi6|> {:.2f}, bonds kept {:.2f} over the "
+        "cycles and {:.2f} per cycle, relative mobility {:.2f} d per cycle\n",
+        p.phase, p.cycles, toString(p.state.state), p.surface_wave.detected ? "yes" : "no",
+        p.surface_wave.mode, p.surface_wave.amplitude_d, p.surface_wave.alternation_fraction,
+        p.kinks.kink_x.size(), p.state.mean_abs_psi6, p.state.bonds_kept,
+        p.state.bonds_kept_per_cycle, p.state.mean_relative_displacement_d);
+  }
+  for (const FrontEpisode& e : a.fronts) {
+    if (!e.from_impact) continue;
+    r += fmt::format(
+        "front           t/T {:.2f}..{:.2f}: {:.2f} +- {:.2f} m/s (lab), {:.2f} m/s relative to "
+        "the gas ahead; peak T~_g/T0 {:.2f}\n",
+        static_cast<double>(e.first_phase) / a.samples_per_cycle,
+        static_cast<double>(e.last_phase) / a.samples_per_cycle, e.speed, e.speed_error,
+        e.speed_relative, e.peak_temperature);
+  }
+  return r;
+}
+
+}  // namespace granwave

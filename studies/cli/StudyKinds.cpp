@@ -1,0 +1,23 @@
+#include "studies/cli/StudyKinds.hpp"
+
+#include "studies/effective_restitution/EffectiveRestitutionStudy.hpp"
+#include "studies/momentum_transfer/MomentumTransferStudy.hpp"
+#include "studies/sound_speed/SoundSpeedStudy.hpp"
+#include "studies/stability/StabilityStudy.hpp"
+#include "studies/wave_fronts/WaveFrontsStudy.hpp"
+
+namespace granwave {
+
+std::unique_ptr<Study> makeStudy(StudyFile& file) {
+  const std::string& kind = file.kind();
+  if (kind == "wave-fronts") return makeWaveFrontsStudy(file);
+  if (kind == "effective-restitution") return makeEffectiveRestitutionStudy(file);
+  if (kind == "sound-speed") return makeSoundSpeedStudy(file);
+  if (kind == "stability") return makeStabilityStudy(file);
+  if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
+  file.fail("study", "kind",
+            "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
+            "momentum-transfer, stability");
+}
+
+}  // namespace granwave

@@ -1,0 +1,91 @@
+// granwave: when does a continuum description of a vibrated granular layer agree with the
+// particles? One program, subcommands; errors are reported once, here, in one line.
+#include <fmt/format.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+#include <string>
+
+#include "hydro/HydroSimulation.hpp"
+#include "particles/EventLoopStall.hpp"
+#include "particles/InelasticCollapse.hpp"
+#include "scene/SceneParser.hpp"
+#include "studies/cli/ExportCommand.hpp"
+#include "studies/cli/FieldsCommand.hpp"
+#include "studies/cli/HydroCommand.hpp"
+#include "studies/cli/OutsideFailure.hpp"
+#include "studies/cli/SimulateCommand.hpp"
+#include "studies/cli/StudyCommand.hpp"
+#include "studies/cli/Version.hpp"
+#include "studies/framework/StudyFile.hpp"
+#include "studies/run_files/RunCheckpoint.hpp"
+#include "studies/runner/ExitCode.hpp"
+#include "studies/runner/RemoteWorkers.hpp"
+#include "studies/runner/RunScheduler.hpp"
+
+int main(int argc, char** argv) {
+  // Before anything else: MPI may rewrite argc/argv. A no-op outside mpirun.
+  granwave::MpiSession mpi(argc, argv);
+  CLI::App app{
+      "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
+  app.set_version_flag("--version", std::string("granwave ") + granwave::kVersion);
+  app.require_subcommand(1);
+  granwave::SimulateOptions simulate;
+  granwave::addSimulateCommand(app, simulate);
+  granwave::FieldsOptions fields;
+  granwave::addFieldsCommand(app, fields);
+  granwave::HydroOptions hydro;
+  granwave::addHydroCommand(app, hydro);
+  granwave::StudyOptions study;
+  granwave::addStudyCommand(app, study);
+  granwave::ExportOptions exported;
+  granwave::addExportCommand(app, exported);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line and the documented code for a bad command line (CLI11's own codes are 100+).
+    fmt::print(stderr, "granwave: {} (see granwave --help)\n", e.what());
+    return granwave::kExitInvalidInput;
+  }
+
+  // Under mpirun an error on one rank ends them all (the others may wait for it).
+  auto stop = [&mpi](int code) {
+    if (mpi.size() > 1) mpi.abort(code);
+    return code;
+  };
+  std::string command_line;
+  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
+  try {
+    if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
+    if (app.got_subcommand("fields")) return granwave::runFields(fields);
+    if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
+    if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
+    if (app.got_subcommand("export")) return granwave::runExport(exported);
+  } catch (const granwave::StudyInterrupted& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return stop(granwave::kExitInterrupted);
+  } catch (const granwave::StudyError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return stop(granwave::kExitInvalidInput);
+  } catch (const granwave::SceneError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return granwave::kExitInvalidInput;
+  } catch (const granwave::hydro::HydroFailure& e) {
+    fmt::print(stderr, "granwave: hydrodynamic solver: {}\n", e.what());
+    return granwave::kExitSolverFailure;
+  } catch (const granwave::InelasticCollapse& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return granwave::kExitEngineBreakdown;
+  } catch (const granwave::EventLoopStall& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return granwave::kExitEngineBreakdown;
+  } catch (const granwave::CheckpointError& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return stop(granwave::kExitCheckpointError);
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "granwave: {}\n", e.what());
+    return stop(granwave::isOutsideFailure(e) ? granwave::kExitFileError : granwave::kExitError);
+  }
+  return 0;
+}

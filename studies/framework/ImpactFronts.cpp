@@ -1,0 +1,59 @@
+#include "studies/framework/ImpactFronts.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granwave {
+
+ImpactFronts impactFronts(const std::vector<Front>& fronts) {
+  std::vector<const Front*> impact;
+  for (const Front& f : fronts)
+    if (f.from_impact && std::isfinite(f.speed)) impact.push_back(&f);
+  ImpactFronts r;
+  r.count = static_cast<int>(impact.size());
+  if (impact.empty()) return r;
+  std::sort(impact.begin(), impact.end(),
+            [](const Front* a, const Front* b) { return a->peak < b->peak; });
+  const Front& weak = *impact.front();
+  const Front& strong = *impact.back();
+  r.weak = {weak.speed, weak.error};
+  r.strong = {strong.speed, strong.error};
+  r.weak_start = weak.start;
+  r.strong_start = strong.start;
+  std::vector<Measurement> all;
+  for (const Front* f : impact) all.push_back({f->speed, f->error});
+  r.all = combine(all);
+  return r;
+}
+
+ImpactFronts combineImpactFronts(const std::vector<ImpactFronts>& runs) {
+  std::vector<Measurement> weak, strong, all;
+  ImpactFronts r;
+  for (const ImpactFronts& x : runs) {
+    weak.push_back(x.weak);
+    strong.push_back(x.strong);
+    all.push_back(x.all);
+    r.count += x.count;
+    if (r.weak_start < 0) r.weak_start = x.weak_start;
+    if (r.strong_start < 0) r.strong_start = x.strong_start;
+  }
+  r.weak = combine(weak);
+  r.strong = combine(strong);
+  r.all = combine(all);
+  return r;
+}
+
+std::vector<double> centerOfMassMinimumPhases(const Profiles& p, int cycles) {
+  std::vector<double> out;
+  if (cycles <= 0 || p.phases < cycles) return out;
+  const int per = p.phases / cycles;
+  for (int c = 0; c < cycles; ++c) {
+    int best = c * per;
+    for (int k = c * per; k < (c + 1) * per; ++k)
+      if (p.com[k] < p.com[best]) best = k;
+    out.push_back(p.phase[best] - std::floor(p.phase[best]));
+  }
+  return out;
+}
+
+}  // namespace granwave

@@ -1,0 +1,38 @@
+#pragma once
+// A study: a plan of runs (particles and hydro), then an analysis of their outputs into
+// numbers (results.h5 /results) and a report. One implementation per study kind
+// (docs/studies.md): wave-fronts, sound-speed, effective-restitution, momentum-transfer.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "h5/File.hpp"
+#include "studies/framework/StudyFile.hpp"
+#include "studies/report/Report.hpp"
+#include "studies/runner/RunRequest.hpp"
+
+namespace granwave {
+
+// The finished runs of a study, by label.
+class RunSet {
+ public:
+  explicit RunSet(std::vector<RunRecord> records);
+  const RunRecord& get(const std::string& label) const;  // throws if never planned
+  const std::vector<RunRecord>& all() const { return records_; }
+
+ private:
+  std::vector<RunRecord> records_;
+  std::map<std::string, std::size_t> index_;
+};
+
+class Study {
+ public:
+  virtual ~Study() = default;
+  virtual std::string title() const = 0;
+  virtual std::vector<RunRequest> plan() const = 0;
+  // Writes the measured numbers under /results of `results` and fills `report`.
+  virtual void analyse(const RunSet& runs, h5::File& results, Report& report) const = 0;
+};
+
+}  // namespace granwave

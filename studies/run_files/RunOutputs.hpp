@@ -1,0 +1,86 @@
+#pragma once
+// The outputs of one cached run as the studies use them, read back from the run's files:
+// phase-averaged particle fields (FIELDS.h5, docs/fields.md), the observables of the H5MD run
+// file, the LAMMPS deck's centre of mass, and (HydroRunFile.hpp) the hydro solver's fields
+// (HYDRO.h5, docs/hydro.md).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace granwave {
+
+struct Front {
+  int first_phase = 0;                 // index of the first phase in the window
+  double start = 0;                    // t/T of the first phase, within the window
+  double speed = 0, error = 0;         // m/s, lab frame
+  double peak = 0;                     // max T~_g / T0 over the episode
+  double gas_ahead = 0, relative = 0;  // m/s (particles only)
+  bool from_impact = true;
+};
+
+// Profiles laid out [phase][z]; block profiles [block][phase][z].
+struct Profiles {
+  int phases = 0, nz = 0;
+  std::vector<double> z;                         // m, lab-frame cell centres
+  std::vector<double> phase, plate, com, front;  // t/T within the window; m
+  std::vector<double> temperature, area_fraction, velocity_z, rms_velocity_x;
+  double at(const std::vector<double>& field, int phase, int j) const {
+    return field[static_cast<std::size_t>(phase) * nz + j];
+  }
+  // Phase index nearest to t/T, the window taken as periodic.
+  int phaseIndex(double t_over_T) const;
+};
+
+struct ParticleFields : Profiles {
+  double T0 = 0, diameter = 0, mass = 0, frequency = 0, amplitude = 0;
+  int cycles_per_window = 0, layer_period = 0, pooled_cycles = 0, blocks = 0;
+  std::vector<double> block_temperature, block_area_fraction, block_velocity_z, block_rms_vx;
+  std::vector<Front> fronts;
+};
+
+struct HydroFields : Profiles {
+  int period = 0, cycles = 0, cells = 0;
+  bool periodic = false;
+  std::int64_t steps = 0, rhs_evals = 0;
+  double rtol = 0, cpu_seconds = 0;
+  std::string regime;  // hydro::regimeName: fluidised, moves as a solid, or at rest
+  std::vector<Front> fronts;
+};
+
+struct RunObservables {
+  std::vector<double> time, com_height, kinetic_energy;
+  std::vector<double> pair_impact_energy, pair_impact_loss;       // cumulative, J
+  std::vector<double> pair_count, tc_elastic_count;               // cumulative, per record
+  std::uint64_t events = 0, pair_collisions = 0, tc_elastic = 0;  // at the end
+};
+
+// The live classification of a particle run (FIELDS.h5 /patterns, docs/classification.md).
+struct LayerPatterns {
+  bool available = false;
+  std::string state;  // "crystal", "amorphous", "liquid-like"
+  bool surface_wave = false;
+  int surface_wave_mode = 0, kinks = 0, period = 0;
+  double surface_wave_amplitude_d = 0, psi6 = 0, mobility_d = 0, bonds_kept = 1;
+  double bonds_kept_per_cycle = 1;
+};
+
+// Particle positions of one recorded frame (lab frame, m).
+struct Frame {
+  std::vector<double> x, z;
+  double plate = 0;
+};
+
+// The LAMMPS deck's output (studies/lammps/paper-scene.lmp): per sample the paper's time t,
+// the plate height and the centre-of-mass height (m, lab frame).
+struct LammpsTrajectory {
+  std::vector<double> time, plate, com;
+  double last_step = 0;
+};
+
+ParticleFields readParticleFields(const std::string& fields_path);
+LammpsTrajectory readLammpsTrajectory(const std::string& path);
+LayerPatterns readLayerPatterns(const std::string& fields_path);
+Frame readLastFrame(const std::string& run_path);
+RunObservables readRunObservables(const std::string& run_path);
+
+}  // namespace granwave

@@ -1,0 +1,99 @@
+#include "studies/runner/RunCache.hpp"
+
+#include <fmt/format.h>
+#include <toml++/toml.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene/SceneParser.hpp"
+#include "studies/runner/ChildProcess.hpp"
+
+namespace granwave {
+
+namespace {
+
+std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 1469598103934665603ull) {
+  for (unsigned char c : bytes) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h;
+}
+
+}  // namespace
+
+RunCache::RunCache(std::string directory, std::string build_id)
+    : directory_(std::move(directory)), build_id_(std::move(build_id)) {
+  std::filesystem::create_directories(directory_);
+}
+
+RunRecord RunCache::record(const RunRequest& request) const {
+  const char* kind = request.kind == RunKind::Particles ? "particles"
+                     : request.kind == RunKind::Hydro   ? "hydro"
+                                                        : "lammps";
+  std::string key = std::string(kind) + "\n" + sceneToToml(request.scene);
+  if (request.kind == RunKind::Lammps) {
+    key += request.program + "\n" + request.deck_text;
+    for (const std::string& v : request.variables) key += v + "\n";
+  }
+  if (request.kind == RunKind::Particles && request.fields)
+    key += fmt::format("window={} blocks={}\n", request.window_cycles, request.blocks);
+  key += build_id_;
+  RunRecord r;
+  r.request = request;
+  // Named by content alone, so two labels for the same scene share one run.
+  r.stem = fmt::format("{}/{}-{:016x}", directory_, kind, fnv1a(key));
+  return r;
+}
+
+bool RunCache::load(RunRecord& r) const {
+  if (!std::filesystem::exists(r.recordPath())) return false;
+  try {
+    const toml::table t = toml::parse_file(r.recordPath());
+    if (!t["ok"].is_boolean() || !t["exit_code"].is_integer()) return false;  // not a record
+    r.ok = t["ok"].value_or(false);
+    r.exit_code = static_cast<int>(t["exit_code"].value_or(std::int64_t{-1}));
+    r.message = t["message"].value_or(std::string());
+    r.wall = t["wall_seconds"].value_or(0.0);
+    r.cpu = t["cpu_seconds"].value_or(0.0);
+  } catch (const toml::parse_error&) {
+    return false;  // unreadable record: run again
+  }
+  // A record whose outputs were removed since does not count: the run is made again.
+  const bool hydro = r.request.kind == RunKind::Hydro;
+  if (r.ok && r.request.kind == RunKind::Lammps) {
+    if (!std::filesystem::exists(r.lammpsPath())) return false;
+    r.reused = true;
+    return true;
+  }
+  if (r.ok && !std::filesystem::exists(hydro ? r.hydroPath() : r.runPath())) return false;
+  if (r.ok && !hydro && r.request.fields && !std::filesystem::exists(r.fieldsPath())) return false;
+  r.reused = true;
+  return true;
+}
+
+void RunCache::store(const RunRecord& r) const {
+  toml::table t{{"label", r.request.label}, {"ok", r.ok},
+                {"exit_code", r.exit_code}, {"message", r.message},
+                {"wall_seconds", r.wall},   {"cpu_seconds", r.cpu}};
+  const std::string tmp = r.recordPath() + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << t << "\n";
+    if (!out) throw std::runtime_error(tmp + ": cannot write the run record");
+  }
+  std::filesystem::rename(tmp, r.recordPath());
+}
+
+std::string buildIdentity() {
+  std::ifstream in(selfExecutable(), std::ios::binary);
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return fmt::format("{:016x}", fnv1a(bytes.str()));
+}
+
+}  // namespace granwave

@@ -1,0 +1,187 @@
+#include "studies/stability/StabilityAnalysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "studies/framework/StudyResults.hpp"
+#include "studies/run_files/HydroRunFile.hpp"
+
+namespace granwave {
+
+namespace {
+
+const std::string kRoot = "/results/stability";
+
+StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs) {
+  StabilityGrid grid;
+  grid.frequencies = c.frequencies;
+  grid.gammas = c.gammas;
+  for (int law = 0; law < kLaws; ++law)
+    for (double fr : c.frequencies)
+      for (double gamma : c.gammas) {
+        std::vector<LayerPatterns> patterns;
+        std::vector<bool> finished;
+        std::vector<std::string> messages;
+        for (int seed : c.seeds) {
+          const RunRecord& r = runs.get(StabilityConfig::particleRun(law, fr, gamma, seed));
+          patterns.push_back(r.ok ? readLayerPatterns(r.fieldsPath()) : LayerPatterns{});
+          finished.push_back(r.ok);
+          messages.push_back(r.message);
+        }
+        grid.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+      }
+  return grid;
+}
+
+HydroPoint hydroPoint(const StabilityConfig& c, const RunSet& runs, int law, double fr,
+                      double gamma, bool rough) {
+  HydroPoint h;
+  if (!(rough ? c.hydro_rough : c.hydro)) return h;
+  h.run = true;
+  const RunRecord& r = runs.get(StabilityConfig::hydroRun(law, fr, gamma, rough));
+  h.ok = r.ok;
+  if (!r.ok) {
+    h.failure = r.message;
+    return h;
+  }
+  const HydroFields hf = readHydroFields(r.hydroPath());
+  h.periodic = hf.periodic;
+  h.period = hf.period;
+  h.regime = hf.regime;
+  return h;
+}
+
+// The first seed at the point whose run has `state`, with its last recorded frame.
+std::optional<GallerySnapshot> snapshot(const StabilityConfig& c, const RunSet& runs,
+                                        std::size_t state, int law, std::size_t i, std::size_t j) {
+  for (int seed : c.seeds) {
+    const RunRecord& r =
+        runs.get(StabilityConfig::particleRun(law, c.frequencies[i], c.gammas[j], seed));
+    if (!r.ok) continue;
+    GallerySnapshot s;
+    s.state = state;
+    s.law = law;
+    s.seed = seed;
+    s.frequency = c.frequencies[i];
+    s.gamma = c.gammas[j];
+    s.patterns = readLayerPatterns(r.fieldsPath());
+    if (!(s.patterns.available && s.patterns.state == kLayerStates[state])) continue;
+    const Frame fr = readLastFrame(r.runPath());
+    const double d = r.request.scene.particles.diameter;
+    for (std::size_t k = 0; k < fr.x.size(); ++k) {
+      s.x.push_back(fr.x[k] / d);
+      s.z.push_back(fr.z[k] / d);
+    }
+    s.plate = fr.plate / d;
+    s.width = r.request.scene.container.width / d;
+    return s;
+  }
+  return std::nullopt;
+}
+
+// A few runs per state: at the points (law, f, Gamma in order) whose verdict is the state.
+std::vector<GallerySnapshot> gallery(const StabilityConfig& c, const RunSet& runs,
+                                     const StabilityGrid& grid) {
+  std::vector<GallerySnapshot> out;
+  for (std::size_t si = 0; si < kLayerStates.size(); ++si) {
+    int shown = 0;
+    for (int law = 0; law < kLaws; ++law)
+      for (std::size_t p = 0; p < grid.verdicts[law].size(); ++p) {
+        const std::size_t i = p / c.gammas.size(), j = p % c.gammas.size();
+        const LayerVerdict& v = grid.at(law, i, j);
+        if (shown >= c.gallery_per_state || !v.classified() || v.state.value != kLayerStates[si])
+          continue;
+        if (auto s = snapshot(c, runs, si, law, i, j)) {
+          out.push_back(std::move(*s));
+          ++shown;
+        }
+      }
+  }
+  return out;
+}
+
+// The hydro period of every point: NaN where it failed or was not run, 0 with no period.
+std::vector<double> hydroPeriods(const std::vector<HydroPoint>& hydro) {
+  std::vector<double> out;
+  for (const HydroPoint& h : hydro)
+    out.push_back(h.ok ? (h.periodic ? h.period : 0) : NAN);
+  return out;
+}
+
+void writeLaw(h5::File& f, const std::string& grp, const std::vector<LayerVerdict>& verdicts,
+              const std::vector<HydroPoint>& hydro, const std::vector<HydroPoint>& rough) {
+  std::vector<double> state, state_votes, classified, period, period_votes, wave, wave_votes, kinks,
+      kinks_votes, agree;
+  for (const LayerVerdict& v : verdicts) {
+    const auto it = std::find(kLayerStates.begin(), kLayerStates.end(), v.state.value);
+    const bool c = v.classified();
+    state.push_back(c && it != kLayerStates.end() ? static_cast<double>(it - kLayerStates.begin())
+                                                  : NAN);
+    state_votes.push_back(v.state.count);
+    classified.push_back(v.state.of);
+    period.push_back(v.period.of > 0 ? v.period.value : NAN);
+    period_votes.push_back(v.period.count);
+    wave.push_back(c ? v.surface_wave.value : NAN);
+    wave_votes.push_back(v.surface_wave.count);
+    kinks.push_back(c ? v.kinks.value : NAN);
+    kinks_votes.push_back(v.kinks.count);
+    agree.push_back(v.seedsAgree());
+  }
+  f.createGroup(grp);
+  f.writeStringAttribute(grp, "state_codes", "0 crystal, 1 amorphous, 2 liquid-like");
+  f.writeStringAttribute(grp, "layout",
+                         "[frequency][gamma], row-major; most frequent over the seeds, "
+                         "*_votes: seeds that gave it, classified_seeds: seeds that voted");
+  putSeries(f, grp + "/state", state, "1");
+  putSeries(f, grp + "/state_votes", state_votes, "1");
+  putSeries(f, grp + "/classified_seeds", classified, "1");
+  putSeries(f, grp + "/period", period, "1");
+  putSeries(f, grp + "/period_votes", period_votes, "1");
+  putSeries(f, grp + "/surface_wave", wave, "1");
+  putSeries(f, grp + "/surface_wave_votes", wave_votes, "1");
+  putSeries(f, grp + "/kinks", kinks, "1");
+  putSeries(f, grp + "/kinks_votes", kinks_votes, "1");
+  putSeries(f, grp + "/seeds_agree", agree, "1");
+  putSeries(f, grp + "/hydro_period", hydroPeriods(hydro), "1");
+  putSeries(f, grp + "/hydro_rough_period", hydroPeriods(rough), "1");
+}
+
+}  // namespace
+
+StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) {
+  StabilityResults r;
+  r.grid = verdicts(c, runs);
+  for (int law = 0; law < kLaws; ++law)
+    for (double fr : c.frequencies)
+      for (double gamma : c.gammas) {
+        r.hydro[law].push_back(hydroPoint(c, runs, law, fr, gamma, false));
+        r.hydro_rough[law].push_back(hydroPoint(c, runs, law, fr, gamma, true));
+      }
+  r.symbol_differences = r.grid.symbolDifferencesPerFrequency();
+  r.period_differences = r.grid.periodDifferencesPerFrequency();
+  r.features = checkPaperFeatures(r.grid);
+  r.gallery = gallery(c, runs, r.grid);
+  return r;
+}
+
+void writeStabilityResults(h5::File& f, const StabilityConfig& c, const StabilityResults& r) {
+  f.createGroup(kRoot);
+  putSeries(f, kRoot + "/frequencies", c.frequencies, "Hz");
+  putSeries(f, kRoot + "/gammas", c.gammas, "1");
+  const std::vector<double> seeds(c.seeds.begin(), c.seeds.end());
+  putSeries(f, kRoot + "/seeds", seeds, "1");
+  putSeries(f, kRoot + "/differences_per_frequency", r.symbol_differences, "1");
+  putSeries(f, kRoot + "/period_differences_per_frequency", r.period_differences, "1");
+  for (int law = 0; law < kLaws; ++law)
+    writeLaw(f, fmt::format("{}/{}", kRoot, kLawNames[law]), r.grid.verdicts[law], r.hydro[law],
+             r.hydro_rough[law]);
+  const std::string features = kRoot + "/features";
+  f.createGroup(features);
+  for (const FeatureCheck& check : r.features)
+    f.writeStringAttribute(features, check.key, check.verdict);
+}
+
+}  // namespace granwave

@@ -1,0 +1,30 @@
+#pragma once
+// The stability study's grid of verdicts: for each law (dry, wet), frequency f and Gamma, the
+// seeds' verdict on the particle layer (SeedVote.hpp). Shared by the study's diagrams and its
+// check of the paper's features (StabilityFeatures.hpp).
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "studies/stability/SeedVote.hpp"
+
+namespace granwave {
+
+struct StabilityGrid {
+  std::vector<double> frequencies, gammas;  // Hz, 1
+  std::vector<LayerVerdict> verdicts[2];    // [law][i_f * gammas.size() + j_gamma]
+
+  const LayerVerdict& at(int law, std::size_t i, std::size_t j) const {
+    return verdicts[law][i * gammas.size() + j];
+  }
+  // Dry and wet differ in a symbol of the paper's diagram (Fig. 3: the state, surface waves,
+  // kinks), by the seeds' verdicts. False where either law has no classified run.
+  bool symbolsDiffer(std::size_t i, std::size_t j) const;
+  // Dry and wet differ in the centre-of-mass period (modal over the seeds).
+  bool periodsDiffer(std::size_t i, std::size_t j) const;
+  // The number of Gamma points per frequency where symbolsDiffer (resp. periodsDiffer).
+  std::vector<double> symbolDifferencesPerFrequency() const;
+  std::vector<double> periodDifferencesPerFrequency() const;
+};
+
+}  // namespace granwave

@@ -1,0 +1,251 @@
+#include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "studies/framework/StudyResults.hpp"
+#include "studies/run_files/HydroRunFile.hpp"
+
+namespace granwave {
+
+namespace {
+
+const std::string kRoot = "/results/wave_fronts";
+
+PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  PaperLaw out;
+  std::vector<ImpactFronts> per_seed;
+  std::vector<double> minima;
+  for (int seed : c.seeds) {
+    auto p = particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("seed {}", seed)));
+    if (!p) continue;
+    per_seed.push_back(impactFronts(p->fronts));
+    for (double m : centerOfMassMinimumPhases(*p, p->cycles_per_window)) minima.push_back(m);
+    out.periods.push_back(p->layer_period);
+    if (seed == c.seeds.front()) out.seed1 = p;
+    if (!out.first) out.first = std::move(p);
+  }
+  out.ed = combineImpactFronts(per_seed);
+  out.seeds_used = static_cast<int>(per_seed.size());
+  out.collision_phase = meanPhase(minima);
+  out.hydro[0] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "velocity"));
+  out.hydro[1] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "constant"));
+  return out;
+}
+
+// Particles (seed 1) and hydro at one sweep point.
+SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
+                      const std::string& hydro_label, double particle_cycles) {
+  SweepPoint s;
+  if (auto p = particleFields(runs, particle_label)) {
+    s.ed_cpu_per_cycle = runs.get(particle_label).cpu / particle_cycles;
+    s.ed = impactFronts(p->fronts).all;
+    s.collision_phase = meanPhase(centerOfMassMinimumPhases(*p, p->cycles_per_window));
+    s.layer_period = p->layer_period;
+  }
+  const HydroOutcome h = hydroOutcome(runs, hydro_label);
+  s.hydro_ok = h.fields.has_value();
+  s.hydro_failure = h.failure;
+  if (s.hydro_ok) {
+    s.hydro = h.fronts.all;
+    s.hydro_cpu = h.fields->cpu_seconds;
+  }
+  return s;
+}
+
+ParameterSweep wetSweep(const WaveFrontsConfig& c, const RunSet& runs, const std::string& key,
+                        const std::vector<double>& values) {
+  ParameterSweep sw{key, values, {}};
+  for (double v : values) {
+    const std::string tag = fmt::format("{}={}", key, formatCompact(v));
+    sw.points.push_back(sweepPoint(runs, WaveFrontsConfig::particleRun(1, tag),
+                                   WaveFrontsConfig::hydroRun(1, tag), c.sweepCycles(1)));
+  }
+  return sw;
+}
+
+// Particles: the statistical error against the cycles averaged. Hydro: the discretisation
+// error against the finest grid with the tightest tolerance (the reference).
+CostAccuracy costAccuracy(const WaveFrontsConfig& c, const RunSet& runs, const PaperLaw& wet) {
+  CostAccuracy out;
+  for (double dur : c.cost_durations) {
+    const std::string label =
+        WaveFrontsConfig::particleRun(1, fmt::format("{} s", formatCompact(dur)));
+    auto p = particleFields(runs, label);
+    if (!p) continue;
+    CostRow row;
+    row.duration = dur;
+    row.pooled_cycles = p->pooled_cycles;
+    row.cpu = runs.get(label).cpu;
+    row.speed = impactFronts(p->fronts).all;
+    row.error = row.speed.error;
+    out.ed_cpu.push_back(row.cpu);
+    out.ed_error.push_back(row.error);
+    out.rows.push_back(row);
+  }
+  const int ref_cells = *std::max_element(c.cost_cells.begin(), c.cost_cells.end());
+  const double ref_rtol = *std::min_element(c.cost_rtol.begin(), c.cost_rtol.end());
+  const HydroOutcome ref = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(ref_cells, ref_rtol));
+  const Measurement v_ref = ref.fields ? ref.fronts.all : Measurement{};
+  for (int cells : c.cost_cells)
+    for (double rtol : c.cost_rtol) {
+      const HydroOutcome h = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(cells, rtol));
+      CostRow row;
+      row.particles = false;
+      row.ok = h.fields.has_value();
+      row.reference = cells == ref_cells && rtol == ref_rtol;
+      row.cells = cells;
+      row.rtol = rtol;
+      row.cpu = h.cpu;
+      row.failure = h.failure;
+      if (row.ok) {
+        row.speed = h.fronts.all;
+        row.error = row.reference ? NAN : std::abs(row.speed.value - v_ref.value);
+        if (!row.reference && std::isfinite(row.error)) {
+          out.hydro_by_rtol[rtol].first.push_back(row.cpu);
+          out.hydro_by_rtol[rtol].second.push_back(row.error);
+        }
+      }
+      out.rows.push_back(row);
+    }
+  out.model_gap = std::abs(v_ref.value - wet.ed.all.value);
+  return out;
+}
+
+void writePaper(h5::File& f, int law, const PaperLaw& p) {
+  const std::string name = kLawNames[law];
+  const std::string g_ed = fmt::format("{}/ed_{}", kRoot, name);
+  putMeasurement(f, g_ed, "weak", p.ed.weak);
+  putMeasurement(f, g_ed, "strong", p.ed.strong);
+  putMeasurement(f, g_ed, "all", p.ed.all);
+  putValue(f, g_ed, "collision_phase", p.collision_phase);
+  const char* variants[2] = {"velocity", "constant"};
+  for (int v = 0; v < 2; ++v) {
+    const HydroOutcome& h = p.hydro[v];
+    if (!h.fields) continue;
+    const std::string gh = fmt::format("{}/hydro_{}_{}", kRoot, name, variants[v]);
+    putMeasurement(f, gh, "weak", h.fronts.weak);
+    putMeasurement(f, gh, "strong", h.fronts.strong);
+    putMeasurement(f, gh, "all", h.fronts.all);
+    putValue(f, gh, "period", h.fields->period);
+    putValue(f, gh, "collision_phase", h.collision_phase);
+  }
+}
+
+void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {
+  for (int law = 0; law < kLaws; ++law) {
+    std::vector<double> x, y, e, cmin, yh, ed_answer, hydro_answer;
+    for (std::size_t i = 0; i < c.counts.size(); ++i) {
+      const SweepPoint& s = r.n_sweep[law][i];
+      ed_answer.push_back(s.ed_cpu_per_cycle * c.answer_cycles);
+      hydro_answer.push_back(s.hydro_cpu);
+      x.push_back(c.counts[i]);
+      y.push_back(s.ed.value);
+      e.push_back(s.ed.error);
+      cmin.push_back(s.collision_phase);
+      yh.push_back(s.hydro.value);
+    }
+    const std::string grp = fmt::format("{}/n_sweep/{}", kRoot, kLawNames[law]);
+    f.createGroup(grp);
+    putSeries(f, grp + "/count", x, "1");
+    putSeries(f, grp + "/ed_speed", y, "m s-1");
+    putSeries(f, grp + "/ed_speed_error", e, "m s-1");
+    putSeries(f, grp + "/ed_collision_phase", cmin, "1");
+    putSeries(f, grp + "/hydro_speed", yh, "m s-1");
+    putSeries(f, grp + "/ed_cpu_per_answer", ed_answer, "s");
+    putSeries(f, grp + "/hydro_cpu_per_answer", hydro_answer, "s");
+  }
+  for (const ParameterSweep& sw : r.wet_sweeps) {
+    std::vector<double> y, e, yh;
+    for (const SweepPoint& s : sw.points) {
+      y.push_back(s.ed.value);
+      e.push_back(s.ed.error);
+      yh.push_back(s.hydro.value);
+    }
+    const std::string grp = fmt::format("{}/{}_sweep", kRoot, sw.key);
+    f.createGroup(grp);
+    putSeries(f, grp + "/value", sw.values, "1");
+    putSeries(f, grp + "/ed_speed", y, "m s-1");
+    putSeries(f, grp + "/ed_speed_error", e, "m s-1");
+    putSeries(f, grp + "/hydro_speed", yh, "m s-1");
+  }
+}
+
+void writeCost(h5::File& f, const CostAccuracy& cost) {
+  const std::string grp = kRoot + "/cost";
+  f.createGroup(grp);
+  putSeries(f, grp + "/ed_cpu_seconds", cost.ed_cpu, "s");
+  putSeries(f, grp + "/ed_error", cost.ed_error, "m s-1");
+  for (const auto& [rtol, xy] : cost.hydro_by_rtol) {
+    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_cpu_seconds", grp, rtol), xy.first, "s");
+    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_error", grp, rtol), xy.second, "m s-1");
+  }
+  putValue(f, grp, "model_gap", cost.model_gap);
+}
+
+}  // namespace
+
+double meanPhase(const std::vector<double>& v) {
+  double c = 0, s = 0;
+  for (double x : v) {
+    c += std::cos(2 * M_PI * x);
+    s += std::sin(2 * M_PI * x);
+  }
+  if (v.empty()) return NAN;
+  // In (0.5, 1.5]: collision times near the end of a cycle read as 0.98, 1.01, not 0.01.
+  double m = std::atan2(s, c) / (2 * M_PI);
+  return m <= 0.5 ? m + 1 : m;
+}
+
+std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label) {
+  const RunRecord& r = runs.get(label);
+  if (!r.ok) return std::nullopt;
+  return readParticleFields(r.fieldsPath());
+}
+
+HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
+  HydroOutcome h;
+  const RunRecord& r = runs.get(label);
+  h.cpu = r.cpu;
+  if (!r.ok) {
+    h.failure = r.message;
+    return h;
+  }
+  h.fields = readHydroFields(r.hydroPath());
+  h.fronts = impactFronts(h.fields->fronts);
+  const int cycles = h.fields->periodic ? h.fields->period : 2;
+  h.collision_phase = meanPhase(centerOfMassMinimumPhases(*h.fields, cycles));
+  return h;
+}
+
+WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {
+  WaveFrontsResults r;
+  for (int law = 0; law < kLaws; ++law) r.paper[law] = paperLaw(c, runs, law);
+  for (int law = 0; law < kLaws; ++law)
+    for (int n : c.counts)
+      r.n_sweep[law].push_back(
+          sweepPoint(runs, WaveFrontsConfig::particleRun(law, fmt::format("N={}", n)),
+                     WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)),
+                     c.sweepCycles(law)));
+  r.wet_sweeps[0] = wetSweep(c, runs, "St_c", c.stokes);
+  r.wet_sweeps[1] = wetSweep(c, runs, "e_inf", c.e_inf);
+  r.cost = costAccuracy(c, runs, r.paper[1]);
+  r.failures = analyseFailures(c, runs);
+  for (int law = 0; law < kLaws; ++law) r.models[law] = analyseModels(c, runs, law);
+  if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0]);
+  return r;
+}
+
+void writeWaveFrontsResults(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {
+  f.createGroup(kRoot);
+  for (int law = 0; law < kLaws; ++law) writePaper(f, law, r.paper[law]);
+  writeSweeps(f, c, r);
+  writeCost(f, r.cost);
+  writeFailures(f, kRoot, c, r.failures);
+  for (int law = 0; law < kLaws; ++law) writeModels(f, kRoot, law, r.models[law]);
+  if (r.lammps) writeLammps(f, kRoot, *r.lammps);
+}
+
+}  // namespace granwave

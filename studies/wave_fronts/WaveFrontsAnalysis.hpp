@@ -1,0 +1,160 @@
+#pragma once
+// The numbers of the wave-fronts study, section by section (docs/studies.md): the paper's
+// scene, the N and wet-law sweeps, cost against accuracy, where each method fails, the model
+// hierarchy and the LAMMPS comparison; written under /results/wave_fronts.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "coarse_grain/PeriodDetector.hpp"
+#include "h5/File.hpp"
+#include "studies/framework/ImpactFronts.hpp"
+#include "studies/framework/Measurement.hpp"
+#include "studies/framework/Study.hpp"
+#include "studies/run_files/RunOutputs.hpp"
+#include "studies/wave_fronts/WaveFrontsStudy.hpp"
+
+namespace granwave {
+
+// The paper's numbers (Huang, Sec. IV: Fig. 5 fronts; Fig. 6a collision times).
+inline const Measurement kPaperWeakWet{1.61, 0.25}, kPaperStrongWet{1.95, 0.25};
+inline constexpr double kPaperCollisionDry = 0.92, kPaperCollisionWet = 0.90;
+
+// A hydro run's outcome: its fields and fronts, or why it failed.
+struct HydroOutcome {
+  std::optional<HydroFields> fields;
+  std::string failure;
+  ImpactFronts fronts;
+  double collision_phase = NAN;  // t/T of the lowest centre of mass (mean over cycles)
+  double cpu = 0;                // s
+};
+
+// Section 1 and the profiles: one law on the paper's scene.
+struct PaperLaw {
+  ImpactFronts ed;  // combined over the finished seeds
+  int seeds_used = 0;
+  std::vector<int> periods;  // layer period of each finished seed
+  double collision_phase = NAN;
+  std::optional<ParticleFields> first;  // the first finished seed (fronts, centre of mass)
+  std::optional<ParticleFields> seed1;  // the first seed listed, if finished (profiles)
+  HydroOutcome hydro[2];                // velocity-dependent closure, constant e_eff
+};
+
+// One point of a sweep: particles (seed 1) and hydro.
+struct SweepPoint {
+  Measurement ed, hydro;
+  double collision_phase = NAN;
+  int layer_period = -1;  // -1: the particle run failed
+  bool hydro_ok = false;
+  std::string hydro_failure;
+  double ed_cpu_per_cycle = NAN;  // CPU-s per drive cycle of the particle run
+  double hydro_cpu = NAN;         // CPU-s of the hydro run, settled layer to periodic state
+};
+
+struct ParameterSweep {
+  std::string key;  // "St_c", "e_inf"
+  std::vector<double> values;
+  std::vector<SweepPoint> points;
+};
+
+struct CostRow {
+  bool particles = true, ok = true, reference = false;
+  double duration = 0;  // s (particles)
+  int cells = 0, pooled_cycles = 0;
+  double rtol = 0, cpu = 0, error = NAN;  // error: statistical (particles) or |v - v_ref|
+  Measurement speed;
+  std::string failure;
+};
+
+struct CostAccuracy {
+  std::vector<CostRow> rows;
+  std::vector<double> ed_cpu, ed_error;
+  std::map<double, std::pair<std::vector<double>, std::vector<double>>> hydro_by_rtol;
+  double model_gap = NAN;
+};
+
+// Where each method fails: [gamma][law] for the particles without TC, [gamma][case] for hydro
+// (cases: law, cells, rtol in that order).
+struct FailureCase {
+  bool ok = false, periodic = false;
+  int period = 0, cycles = 0;
+  double collapse_time = NAN;
+  std::string failure;
+  std::string regime;  // hydro: "at rest", "solid" or "fluidised" (docs/hydro.md)
+};
+
+struct FailureMap {
+  std::vector<std::vector<FailureCase>> particles, hydro;
+  std::vector<std::string> hydro_cases;  // "dry 100 cells rtol 0.01", ...
+  int hydro_failures = 0;
+};
+
+struct ModelCandidate {
+  std::string description, key;
+  bool failed = false;  // every seed, or the hydro run
+  std::string failure;
+  Measurement speed;
+  std::string periods;
+  double sigma = NAN;
+  bool reproduces = false, powerless = false;
+};
+
+struct ModelHierarchy {
+  Measurement reference;
+  std::string reference_periods;
+  int reference_period = 0;
+  std::vector<ModelCandidate> candidates;
+  std::string simplest;  // empty: none reproduces the particles
+};
+
+// The dry layer with LAMMPS beside the event-driven engine (seed 1) and hydro (velocity-
+// dependent closure): cost per simulated second, centre-of-mass period and mean height.
+struct MethodOnDryScene {
+  bool ran = false;                          // finished
+  double cpu_rate = NAN, mean_height = NAN;  // CPU s per simulated s; centre of mass / d
+  int period = 0;
+  Measurement front;
+};
+
+struct LammpsComparison {
+  MethodOnDryScene ed, hydro;
+  bool ok = false;  // the LAMMPS run
+  std::string failure;
+  double ed_rate = NAN, lammps_rate = NAN, ratio = NAN;  // CPU s per simulated s
+  double mean_height = NAN;                              // centre of mass / d
+  PeriodResult period;
+  std::vector<double> folded_phase, folded_height;  // two cycles, / d
+};
+
+struct WaveFrontsResults {
+  PaperLaw paper[2];
+  std::vector<SweepPoint> n_sweep[2];
+  ParameterSweep wet_sweeps[2];  // St_c, e_inf
+  CostAccuracy cost;
+  FailureMap failures;
+  ModelHierarchy models[2];
+  std::optional<LammpsComparison> lammps;
+};
+
+WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& config, const RunSet& runs);
+void writeWaveFrontsResults(h5::File& file, const WaveFrontsConfig& config,
+                            const WaveFrontsResults& results);
+
+// Circular mean of phases given in [0, 1), in (0.5, 1.5].
+double meanPhase(const std::vector<double>& phases);
+
+// Parts of the analysis by section; WaveFrontsMethods.cpp: where methods fail, the model
+// hierarchy, LAMMPS.
+HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label);
+std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label);
+FailureMap analyseFailures(const WaveFrontsConfig& config, const RunSet& runs);
+ModelHierarchy analyseModels(const WaveFrontsConfig& config, const RunSet& runs, int law);
+LammpsComparison analyseLammps(const WaveFrontsConfig& config, const RunSet& runs,
+                               const PaperLaw& dry);
+void writeFailures(h5::File& file, const std::string& root, const WaveFrontsConfig& config,
+                   const FailureMap& failures);
+void writeModels(h5::File& file, const std::string& root, int law, const ModelHierarchy& models);
+void writeLammps(h5::File& file, const std::string& root, const LammpsComparison& lammps);
+
+}  // namespace granwave

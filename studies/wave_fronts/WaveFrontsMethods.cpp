@@ -1,0 +1,229 @@
+// The wave-fronts study's analysis of the methods themselves: where each fails, the simplest
+// model that reproduces the particles, and the soft-sphere DEM alternative (LAMMPS).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "studies/framework/FailureReason.hpp"
+#include "studies/framework/StudyResults.hpp"
+#include "studies/run_files/HydroRunFile.hpp"
+#include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
+
+namespace granwave {
+
+namespace {
+
+// A particle model over the study's seeds ("" the full model, "constant e ", "no rotation "):
+// the combined front speed, the periods of the seeds and their most frequent value (0: none).
+int overSeeds(const WaveFrontsConfig& c, const RunSet& runs, int law, const std::string& tag,
+              Measurement& speed, std::string& periods) {
+  std::vector<ImpactFronts> fronts;
+  std::map<int, int> count;
+  periods.clear();
+  for (int sd : c.seeds) {
+    auto p =
+        particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd)));
+    if (!p) continue;
+    fronts.push_back(impactFronts(p->fronts));
+    ++count[p->layer_period];
+    periods += (periods.empty() ? "" : ", ") + std::to_string(p->layer_period);
+  }
+  speed = combineImpactFronts(fronts).all;
+  int mode = 0, best = 0;
+  for (auto [period, n] : count)
+    if (n > best) {
+      best = n;
+      mode = period;
+    }
+  return mode;
+}
+
+// A candidate reproduces the reference if its front speed lies within 2 combined sigma and its
+// period is the reference's most frequent one. A candidate much less precise than the
+// reference passes a 2-sigma test by its own error bar: that says nothing, and is marked.
+void judge(const ModelHierarchy& m, ModelCandidate& c, int period) {
+  c.sigma = sigmaDistance(c.speed, m.reference);
+  c.powerless = std::isfinite(c.speed.error) && std::isfinite(m.reference.error) &&
+                c.speed.error > 2 * std::max(m.reference.error, 1e-12);
+  c.reproduces = !c.powerless && std::isfinite(c.sigma) && std::abs(c.sigma) <= 2.0 &&
+                 m.reference_period > 0 && period == m.reference_period;
+}
+
+FailureCase particleFailure(const RunSet& runs, int law, double gamma) {
+  FailureCase f;
+  const RunRecord& r = runs.get(
+      WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))));
+  f.ok = r.ok;
+  if (r.ok) {
+    f.period = readParticleFields(r.fieldsPath()).layer_period;
+  } else {
+    f.failure = r.message;
+    f.collapse_time = collapseTime(r.message);
+  }
+  return f;
+}
+
+FailureCase hydroFailure(const RunSet& runs, int law, double gamma, int cells, double rtol) {
+  FailureCase f;
+  const HydroOutcome h =
+      hydroOutcome(runs, WaveFrontsConfig::failureHydroRun(law, gamma, cells, rtol));
+  f.ok = h.fields.has_value();
+  f.failure = h.failure;
+  if (f.ok) {
+    f.periodic = h.fields->periodic;
+    f.period = h.fields->period;
+    f.cycles = h.fields->cycles;
+    f.regime = h.fields->regime;
+  }
+  return f;
+}
+
+}  // namespace
+
+FailureMap analyseFailures(const WaveFrontsConfig& c, const RunSet& runs) {
+  FailureMap out;
+  for (int law = 0; law < kLaws; ++law)
+    for (int cells : c.fail_cells)
+      for (double rtol : c.fail_rtol)
+        out.hydro_cases.push_back(
+            fmt::format("{} {} cells rtol {:g}", kLawNames[law], cells, rtol));
+  for (double gamma : c.fail_gammas) {
+    std::vector<FailureCase> particles, hydro;
+    for (int law = 0; law < kLaws; ++law) particles.push_back(particleFailure(runs, law, gamma));
+    for (int law = 0; law < kLaws; ++law)
+      for (int cells : c.fail_cells)
+        for (double rtol : c.fail_rtol) {
+          hydro.push_back(hydroFailure(runs, law, gamma, cells, rtol));
+          out.hydro_failures += !hydro.back().ok;
+        }
+    out.particles.push_back(particles);
+    out.hydro.push_back(hydro);
+  }
+  return out;
+}
+
+ModelHierarchy analyseModels(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  ModelHierarchy m;
+  m.reference_period = overSeeds(c, runs, law, "", m.reference, m.reference_periods);
+  using C = WaveFrontsConfig;
+  const struct {
+    std::string description, label;
+    bool hydro;
+  } candidates[] = {
+      {fmt::format("hydro, constant e = {:.3f}, Jenkins-Richman", c.e_eff[law]),
+       C::hydroRun(law, "constant"), true},
+      {"hydro, velocity-dependent closure, Jenkins-Richman", C::hydroRun(law, "velocity"), true},
+      {"hydro, velocity-dependent closure, Garzo-Dufty", C::hydroRun(law, "Garzo-Dufty"), true},
+      {"hydro, rough particles (rotational temperature), velocity-dependent, Jenkins-Richman",
+       C::hydroRun(law, "rough"), true},
+      {fmt::format("particles, constant e = {:.3f}", c.e_eff[law]), "constant e ", false},
+      {"particles, no rotation (mu = 0)", "no rotation ", false},
+  };
+  for (const auto& cand : candidates) {
+    ModelCandidate mc;
+    mc.description = cand.description;
+    mc.key = cand.hydro ? cand.label : "ED " + cand.label;
+    while (!mc.key.empty() && mc.key.back() == ' ') mc.key.pop_back();
+    int period = 0;
+    if (cand.hydro) {
+      const HydroOutcome h = hydroOutcome(runs, cand.label);
+      mc.failed = !h.fields;
+      mc.failure = "failed: " + shortReason(h.failure);
+      if (h.fields) {
+        mc.speed = h.fronts.all;
+        period = h.fields->periodic ? h.fields->period : 0;
+        mc.periods = period ? std::to_string(period) : "none";
+      }
+    } else {
+      period = overSeeds(c, runs, law, cand.label, mc.speed, mc.periods);
+      mc.failed = mc.periods.empty();
+      mc.failure = "failed: every seed";
+    }
+    if (!mc.failed) judge(m, mc, period);
+    if (mc.reproduces && m.simplest.empty()) m.simplest = mc.description;
+    m.candidates.push_back(mc);
+  }
+  return m;
+}
+
+LammpsComparison analyseLammps(const WaveFrontsConfig& c, const RunSet& runs, const PaperLaw& dry) {
+  LammpsComparison out;
+  const double d = c.scenes.base[0].particles.diameter;
+  const RunRecord& ed_run =
+      runs.get(WaveFrontsConfig::particleRun(0, fmt::format("seed {}", c.seeds.front())));
+  out.ed_rate = ed_run.ok ? ed_run.cpu / c.duration : NAN;
+  if (dry.seed1) {
+    double mean = 0;
+    for (double z : dry.seed1->com) mean += z / d / dry.seed1->phases;
+    out.ed = {true, out.ed_rate, mean, dry.seed1->layer_period,
+              impactFronts(dry.seed1->fronts).all};
+  }
+  if (const HydroOutcome& h = dry.hydro[0]; h.fields) {
+    double mean = 0;
+    for (double z : h.fields->com) mean += z / d / h.fields->phases;
+    out.hydro = {true, h.cpu / (h.fields->cycles / c.scenes.base[0].drive.frequency), mean,
+                 h.fields->period, h.fronts.all};
+  }
+  const RunRecord& r = runs.get(c.lammpsRun());
+  out.ok = r.ok;
+  if (!r.ok) {
+    out.failure = r.message;
+    return out;
+  }
+  const LammpsTrajectory l = readLammpsTrajectory(r.lammpsPath());
+  const int M = 100;  // the deck's samples per cycle (its default, used by the study)
+  PeriodOptions po;
+  po.samples_per_cycle = M;
+  const int cycles = static_cast<int>(l.com.size()) / M;
+  out.period = detectPeriod(l.com, std::max(3, cycles / 5), po);
+  out.lammps_rate = r.cpu / c.lammps_duration;
+  double mean = 0;
+  for (double z : l.com) mean += z / d / static_cast<double>(l.com.size());
+  out.mean_height = mean;
+  out.ratio = out.lammps_rate / out.ed_rate;
+  // Centre of mass folded onto two cycles over the steady part (the last 80 % of cycles).
+  std::vector<double> y(2 * M, 0.0);
+  std::vector<int> n(2 * M, 0);
+  const int first = std::max(3, cycles / 5) * M;
+  for (std::size_t i = static_cast<std::size_t>(first); i < l.com.size(); ++i) {
+    const double phase = l.time[i] * c.scenes.base[0].drive.frequency;
+    const int k = static_cast<int>(std::lround(phase * M)) % (2 * M);
+    y[k] += l.com[i] / d;
+    ++n[k];
+  }
+  for (int k = 0; k < 2 * M; ++k) {
+    out.folded_phase.push_back(static_cast<double>(k) / M);
+    out.folded_height.push_back(n[k] ? y[k] / n[k] : NAN);
+  }
+  return out;
+}
+
+void writeFailures(h5::File& f, const std::string& root, const WaveFrontsConfig& c,
+                   const FailureMap& m) {
+  for (int law = 0; law < kLaws; ++law) {
+    std::vector<double> collapse;
+    for (const auto& row : m.particles) collapse.push_back(row[law].collapse_time);
+    putSeries(f, fmt::format("{}/failure/ed_no_tc_collapse_time_{}", root, kLawNames[law]),
+              collapse, "s");
+  }
+  putSeries(f, root + "/failure/gamma", c.fail_gammas, "1");
+  putValue(f, root + "/failure", "hydro_failures", m.hydro_failures);
+}
+
+void writeModels(h5::File& f, const std::string& root, int law, const ModelHierarchy& m) {
+  for (const ModelCandidate& c : m.candidates)
+    if (!c.failed)
+      putMeasurement(f, fmt::format("{}/models/{}", root, kLawNames[law]), c.key, c.speed);
+}
+
+void writeLammps(h5::File& f, const std::string& root, const LammpsComparison& l) {
+  if (!l.ok) return;
+  putValue(f, root + "/lammps", "cpu_per_simulated_second", l.lammps_rate);
+  putValue(f, root + "/lammps", "event_driven_cpu_per_simulated_second", l.ed_rate);
+  putValue(f, root + "/lammps", "speed_ratio", l.ratio);
+  putValue(f, root + "/lammps", "period", l.period.period);
+}
+
+}  // namespace granwave

@@ -1,0 +1,293 @@
+// The wave-fronts study's report on the methods themselves: cost against accuracy, where each
+// method fails, the simplest model that reproduces the particles, soft-sphere DEM (LAMMPS).
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "studies/framework/FailureReason.hpp"
+#include "studies/framework/FieldFigures.hpp"
+#include "studies/wave_fronts/WaveFrontsReport.hpp"
+
+namespace granwave {
+
+namespace {
+
+Table costTable(const CostAccuracy& cost) {
+  Table t;
+  t.title = "Runs of the cost-accuracy chart";
+  t.columns = {"method", "setting", "CPU s", "front speed (m/s)", "error (m/s)"};
+  for (const CostRow& r : cost.rows) {
+    if (r.particles) {
+      t.rows.push_back({"particles",
+                        fmt::format("{:g} s ({} cycles pooled)", r.duration, r.pooled_cycles),
+                        formatNumber(r.cpu), format(r.speed), formatNumber(r.error, 3)});
+      continue;
+    }
+    const std::string setting = fmt::format("{} cells, rtol {:g}", r.cells, r.rtol);
+    if (!r.ok)
+      t.rows.push_back(
+          {"hydro", setting, formatNumber(r.cpu), "failed: " + shortReason(r.failure), "–"});
+    else
+      t.rows.push_back({"hydro", setting + (r.reference ? " (reference)" : ""), formatNumber(r.cpu),
+                        format(r.speed), r.reference ? "reference" : formatNumber(r.error, 3)});
+  }
+  return t;
+}
+
+Table particleFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
+  Table t;
+  t.title = "Particles without the TC model";
+  t.columns = {"Gamma", "dry", "wet"};
+  for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
+    std::vector<std::string> row{formatCompact(c.fail_gammas[i])};
+    for (const FailureCase& f : m.particles[i])
+      row.push_back(f.ok ? fmt::format("ran {:g} s, period {}", c.fail_duration, f.period)
+                         : shortReason(f.failure));
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// One row per case (law, grid, tolerance), one column per Gamma: the table stays as narrow as
+// the Gamma values are few.
+Table hydroFailureTable(const WaveFrontsConfig& c, const FailureMap& m) {
+  Table t;
+  t.title = "Hydro solver over Gamma, grid and tolerance";
+  t.columns = {"law, grid, tolerance"};
+  for (double gamma : c.fail_gammas) t.columns.push_back("Gamma = " + formatCompact(gamma));
+  for (std::size_t k = 0; k < m.hydro_cases.size(); ++k) {
+    std::vector<std::string> row{m.hydro_cases[k]};
+    for (std::size_t i = 0; i < c.fail_gammas.size(); ++i) {
+      const FailureCase& f = m.hydro[i][k];
+      const std::string regime = f.regime == "fluidised" ? "" : " (" + f.regime + ")";
+      row.push_back(!f.ok        ? "fails: " + shortReason(f.failure)
+                    : f.periodic ? fmt::format("ok, period {}{}", f.period, regime)
+                                 : fmt::format("ok, no period in {} cycles{}", f.cycles, regime));
+    }
+    t.rows.push_back(row);
+  }
+  return t;
+}
+
+// Two colours for a yes/no outcome, the cases and Gamma values named on the axes.
+Figure hydroFailureMap(const WaveFrontsConfig& c, const FailureMap& m) {
+  Image map;
+  map.nx = static_cast<int>(c.fail_gammas.size());
+  map.ny = static_cast<int>(m.hydro_cases.size());
+  map.values.assign(static_cast<std::size_t>(map.nx * map.ny), NAN);
+  for (std::size_t i = 0; i < c.fail_gammas.size(); ++i)
+    for (std::size_t k = 0; k < m.hydro_cases.size(); ++k)
+      map.values[k * map.nx + i] = m.hydro[i][k].ok ? 1 : 0;
+  map.x0 = -0.5;
+  map.x1 = map.nx - 0.5;
+  map.y0 = -0.5;
+  map.y1 = map.ny - 0.5;
+  for (double gamma : c.fail_gammas) map.x_labels.push_back(formatCompact(gamma));
+  map.y_labels = m.hydro_cases;
+  map.label = "CVODE outcome";
+  map.category_labels = {"failed", "reached the end"};
+  map.category_colors = {"tab:red", "tab:green"};
+  Figure fm;
+  fm.title = "Hydro stability map";
+  fm.caption =
+      "Each cell one hydro run of the table above: green, the solver reached the end; red, "
+      "CVODE failed (the table gives the flag).";
+  fm.xlabel = "Gamma";
+  fm.ylabel = "law, grid, tolerance";
+  fm.image.push_back(std::move(map));
+  fm.legend = false;
+  return fm;
+}
+
+// The period a hydro candidate gave ("2", "none") or why it has none.
+std::string hydroPeriod(const ModelHierarchy& m, const std::string& key) {
+  for (const ModelCandidate& c : m.candidates)
+    if (c.key == key) return c.failed ? "no period (failed)" : c.periods;
+  return "not run";
+}
+
+// Does the continuum double where the particles do, smooth disks against rough particles
+// (issue: the particles' friction carries about half their dissipation)?
+std::string doublingVerdict(const WaveFrontsResults& r) {
+  std::string text = "Period doubling in the continuum: ";
+  std::string split[2][2];  // [model smooth, rough][law]
+  bool rough_matches = true;
+  for (int law = 0; law < kLaws; ++law) {
+    const ModelHierarchy& m = r.models[law];
+    split[0][law] = hydroPeriod(m, WaveFrontsConfig::hydroRun(law, "velocity"));
+    split[1][law] = hydroPeriod(m, WaveFrontsConfig::hydroRun(law, "rough"));
+    rough_matches = rough_matches && m.reference_period > 0 &&
+                    split[1][law] == std::to_string(m.reference_period);
+    text += fmt::format(
+        "{} layer, particles period {} (seeds {}), smooth-disk hydro {}, rough-particle hydro {}; ",
+        kLawNames[law], m.reference_period, m.reference_periods, split[0][law], split[1][law]);
+  }
+  return text + (rough_matches
+                     ? "the rough closure reproduces the particles' dry/wet periods."
+                     : "the rough closure does not reproduce the particles' dry/wet periods "
+                       "(or the particles' period is undecided).");
+}
+
+}  // namespace
+
+void costSection(const WaveFrontsConfig&, const CostAccuracy& cost, Report& report) {
+  ReportSection& s = report.section(
+      "Cost against accuracy",
+      "Error of the wet layer's mean impact-front speed against the CPU time of the run, on the "
+      "same axes. Particles: the statistical error (fit and block spread) against the number of "
+      "cycles averaged; it need not fall, since the wet layer switches between periods 1 and 2 "
+      "and the front speed depends on that. Hydro: the discretisation error, |v - v_ref| against "
+      "the finest "
+      "grid and tightest tolerance run (v_ref), which is not plotted. The dashed line is the "
+      "model gap: the hydro reference minus the particles' combined value, an error no grid "
+      "or tolerance removes.");
+  Figure fig;
+  fig.title = "Front-speed error against CPU time (wet layer)";
+  fig.caption = "Log-log. Each point is one run; CPU time of the run's process.";
+  fig.xlabel = "CPU time (s)";
+  fig.ylabel = "front-speed error (m/s)";
+  fig.xscale = "log";
+  fig.yscale = "log";
+  Series eds = lineSeries(cost.ed_cpu, cost.ed_error, "particles (cycles averaged)", kLawColors[1]);
+  eds.marker = "o";
+  fig.series.push_back(eds);
+  for (const auto& [rtol, xy] : cost.hydro_by_rtol) {
+    std::vector<double> shown = xy.second;  // a zero error cannot sit on a log axis
+    for (double& e : shown) e = std::max(e, 1e-4);
+    Series hs = lineSeries(xy.first, shown, fmt::format("hydro, rtol {:g} (cells vary)", rtol));
+    // A moved std::string, not a literal: GCC 12 warns falsely (-Wrestrict, GCC bug 105329)
+    // on assigning a literal here once this loop is inlined.
+    hs.marker = std::string("s");
+    fig.series.push_back(hs);
+  }
+  if (std::isfinite(cost.model_gap) && cost.model_gap > 0)
+    fig.series.push_back(
+        horizontalLine(cost.model_gap, "model gap |hydro - particles|", 0, "black"));
+  s.add(std::move(fig));
+  s.add(costTable(cost));
+}
+
+void failureSection(const WaveFrontsConfig& c, const FailureMap& m, Report& report) {
+  ReportSection& s = report.section(
+      "Where each method fails",
+      "Each case below was run. Particles without the TC model (contact.tc = \"off\"): inelastic "
+      "collapse, an infinite number of collisions in finite time, stops the event-driven engine "
+      "(it is detected and reported with the time and the particles). Hydro: the solver's "
+      "outcome over Gamma, grid and tolerance. Its state is admissible by construction "
+      "(temperature positive, packing below close packing; docs/hydro.md), so a failure means "
+      "CVODE gave up or the step budget of a drive cycle ran out (stagnation), reported with the "
+      "time and cycle. A layer that never leaves the plate or moves as a block is a result, "
+      "not a failure: it is marked 'at rest' or 'solid'.");
+  s.add(particleFailureTable(c, m));
+  s.add(hydroFailureTable(c, m));
+  s.add(hydroFailureMap(c, m));
+}
+
+void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& report) {
+  ReportSection& s = report.section(
+      "The simplest model that reproduces the particles",
+      "Reference: the full particle model (rotation with Coulomb friction, velocity-dependent "
+      "restitution), combined over seeds. Candidates from the simplest up; a candidate "
+      "reproduces the reference if its mean impact-front speed lies within 2 combined sigma and "
+      "its centre-of-mass period is the reference's most frequent period over the seeds. "
+      "Particle candidates run with the same seeds and are combined the same way.");
+  Table t;
+  t.title = "Model hierarchy against the full particle model";
+  t.columns = {"layer", "model", "front speed (m/s)", "Δ / σ", "period (T)", "reproduces"};
+  std::string verdicts;
+  for (int law = 0; law < kLaws; ++law) {
+    const std::string name = kLawNames[law];
+    const ModelHierarchy& m = r.models[law];
+    t.rows.push_back({name, "particles, full model (reference)", format(m.reference), "0",
+                      m.reference_periods + " (mode " + std::to_string(m.reference_period) + ")",
+                      "–"});
+    for (const ModelCandidate& c : m.candidates) {
+      if (c.failed) {
+        t.rows.push_back({name, c.description, c.failure, "–", "–", "no (fails)"});
+        continue;
+      }
+      t.rows.push_back({name, c.description, format(c.speed), formatNumber(c.sigma, 1),
+                        c.periods.empty() ? "–" : c.periods,
+                        c.reproduces  ? "yes"
+                        : c.powerless ? "cannot tell (error > 2x the reference's)"
+                                      : "no"});
+    }
+    verdicts +=
+        fmt::format("{} layer: {}. ", name,
+                    m.simplest.empty() ? "no simpler model reproduces the particles"
+                                       : "simplest model that reproduces it: " + m.simplest);
+  }
+  s.add(std::move(t));
+  s.addText(verdicts);
+  s.addText(doublingVerdict(r));
+  const ImpactFronts& wet = r.paper[1].ed;
+  const ImpactFronts& dry = r.paper[0].ed;
+  report.summary = fmt::format(
+      "Particles, wet layer: fronts at {} m/s after the weak and {} m/s after the strong impact "
+      "(paper: 1.61 ± 0.25 and 1.95 ± 0.25; {} and {} sigma away). Dry layer: {} and {} "
+      "m/s. {}",
+      format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
+      formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
+      format(dry.strong), verdicts);
+}
+
+void lammpsSection(const WaveFrontsConfig& c, const LammpsComparison& l, const PaperLaw& dry,
+                   Report& report) {
+  ReportSection& s = report.section(
+      "The alternative a user would run: soft-sphere DEM (LAMMPS)",
+      "The paper's scene with LAMMPS' granular package (studies/lammps/paper-scene.lmp: Hertz "
+      "contacts of softened glass, E = 63 MPa, Tsuji damping for a binary restitution of 0.9, "
+      "Mindlin friction 0.5, the same container and drive), beside the event-driven dry layer "
+      "(seed 1; its restitution is close to 0.9 at the layer's impact speeds) and the hydro "
+      "solver. Speeds are CPU seconds (one core each) per simulated second, measured in this "
+      "study's run (CPU, not wall, time: the study runs several runs at once). The "
+      "deck writes the centre of mass only, so no front speed is compared.");
+  Table t;
+  t.title = "Soft-sphere DEM against event-driven and continuum, dry layer";
+  t.columns = {"method",       "CPU s per simulated s", "CM period (T)",
+               "f/2 strength", "CM mean height / d",    "front speed (m/s)"};
+  if (l.ed.ran)
+    t.rows.push_back({"event-driven (granwave)", formatNumber(l.ed.cpu_rate, 4),
+                      std::to_string(l.ed.period), "–", formatNumber(l.ed.mean_height, 2),
+                      format(l.ed.front)});
+  if (l.hydro.ran)
+    t.rows.push_back({"hydro (granwave, velocity-dependent closure)",
+                      formatNumber(l.hydro.cpu_rate, 3), std::to_string(l.hydro.period), "–",
+                      formatNumber(l.hydro.mean_height, 2), format(l.hydro.front)});
+  if (!l.ok) {
+    t.rows.push_back({"LAMMPS", "failed: " + l.failure, "–", "–", "–", "–"});
+    s.add(std::move(t));
+    return;
+  }
+  const std::string f2 = l.period.strength.size() > 2 ? formatNumber(l.period.strength[2], 3) : "–";
+  t.rows.push_back({"LAMMPS (soft-sphere DEM, one core)", formatNumber(l.lammps_rate, 3),
+                    std::to_string(l.period.period), f2, formatNumber(l.mean_height, 2),
+                    "not available (centre of mass only)"});
+  s.add(std::move(t));
+
+  // Centre of mass folded onto two cycles over the steady part, beside the particles'.
+  const double d = c.scenes.base[0].particles.diameter;
+  Figure fig;
+  fig.title = "Centre of mass over two cycles: DEM, event-driven, hydro (dry)";
+  fig.caption = "LAMMPS: averaged over its last 80 % of cycles, folded onto two cycles.";
+  fig.xlabel = "t / T";
+  fig.ylabel = "z_CM / d (lab frame)";
+  fig.series.push_back(lineSeries(l.folded_phase, l.folded_height, "LAMMPS (DEM)", "tab:green"));
+  if (dry.seed1)
+    fig.series.push_back(centerOfMassSeries(*dry.seed1, d, "event-driven", "tab:orange"));
+  if (const auto& h = dry.hydro[0].fields) {
+    Series hs = centerOfMassSeries(*h, d, "hydro", "tab:orange");
+    hs.linestyle = "--";
+    fig.series.push_back(hs);
+  }
+  s.add(std::move(fig));
+  s.addText(fmt::format(
+      "Measured in this run: LAMMPS takes {} CPU seconds per simulated second against {} for "
+      "the event-driven engine on the same scene, a factor {}. Its centre of mass moves with "
+      "period {} (f/2 strength {}), the event-driven dry layer with period {}.",
+      formatNumber(l.lammps_rate, 2), formatNumber(l.ed_rate, 3), formatNumber(l.ratio, 0),
+      l.period.period, f2, l.ed.ran ? std::to_string(l.ed.period) : "–"));
+}
+
+}  // namespace granwave

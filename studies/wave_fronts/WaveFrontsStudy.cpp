@@ -1,0 +1,226 @@
+#include "studies/wave_fronts/WaveFrontsStudy.hpp"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "studies/framework/InstalledFiles.hpp"
+#include "studies/framework/Measurement.hpp"
+#include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
+#include "studies/wave_fronts/WaveFrontsReport.hpp"
+
+namespace granwave {
+
+namespace {
+
+// The LAMMPS executable: a path, or a name looked up on PATH; empty if not found.
+std::string findProgram(const std::string& exe) {
+  if (exe.find('/') != std::string::npos) return std::filesystem::exists(exe) ? exe : "";
+  const char* path = std::getenv("PATH");
+  std::istringstream dirs(path ? path : "");
+  for (std::string dir; std::getline(dirs, dir, ':');)
+    if (std::filesystem::exists(std::filesystem::path(dir) / exe))
+      return (std::filesystem::path(dir) / exe).string();
+  return "";
+}
+
+}  // namespace
+
+std::string WaveFrontsConfig::failureHydroRun(int law, double gamma, int cells, double rtol) {
+  return hydroRun(law, fmt::format("Gamma={} {} cells rtol {}", formatCompact(gamma), cells,
+                                   formatCompact(rtol)));
+}
+
+std::string WaveFrontsConfig::costHydroRun(int cells, double rtol) {
+  return hydroRun(1, fmt::format("{} cells rtol {}", cells, formatCompact(rtol)));
+}
+
+std::string WaveFrontsConfig::lammpsRun() const {
+  return fmt::format("LAMMPS dry seed {}", lammps_seed);
+}
+
+void WaveFrontsStudy::readKeys(StudyFile& f) {
+  c_.scenes = LawScenes::read(f);
+  c_.duration = f.number("particles", "duration", c_.duration);
+  c_.seeds = f.integers("particles", "seeds", c_.seeds);
+  c_.window = f.integer("particles", "window_cycles", c_.window);
+  c_.blocks = f.integer("particles", "blocks", c_.blocks);
+  c_.profile_phases = f.numbers("particles", "profile_phases", c_.profile_phases);
+  c_.sweep_duration = f.number("sweep", "duration", c_.sweep_duration);
+  c_.counts = f.integers("sweep", "counts", c_.counts);
+  c_.answer_cycles = f.number("sweep", "answer_cycles", c_.answer_cycles);
+  if (!(c_.answer_cycles >= 1 && c_.answer_cycles <= 1e6))
+    f.fail("sweep", "answer_cycles", "expected a number of cycles in [1, 1e6]");
+  c_.stokes = f.numbers("sweep", "stokes_critical", c_.stokes);
+  c_.e_inf = f.numbers("sweep", "e_inf", c_.e_inf);
+  c_.cost_durations = f.numbers("cost", "durations", c_.cost_durations);
+  c_.cost_cells = f.integers("cost", "hydro_cells", c_.cost_cells);
+  c_.cost_rtol = f.numbers("cost", "hydro_rtol", c_.cost_rtol);
+  c_.fail_gammas = f.numbers("failure", "gammas", c_.fail_gammas);
+  c_.fail_duration = f.number("failure", "duration", c_.fail_duration);
+  c_.fail_cells = f.integers("failure", "hydro_cells", c_.fail_cells);
+  c_.fail_rtol = f.numbers("failure", "hydro_rtol", c_.fail_rtol);
+  c_.lammps_mode = f.string("lammps", "run", c_.lammps_mode);
+  if (c_.lammps_mode != "auto" && c_.lammps_mode != "yes" && c_.lammps_mode != "no")
+    f.fail("lammps", "run", "expected \"auto\", \"yes\" or \"no\"");
+  c_.lammps_install = f.boolean("lammps", "install", c_.lammps_install);
+  c_.lammps_executable = f.string("lammps", "executable", c_.lammps_executable);
+  c_.lammps_duration = f.number("lammps", "duration", c_.lammps_duration);
+  c_.lammps_seed = f.integer("lammps", "seed", c_.lammps_seed);
+  // The deck: given relative to the study file, else the one installed with the program.
+  c_.lammps_deck = f.string("lammps", "deck", "");
+  if (c_.lammps_mode != "no")
+    c_.lammps_deck = c_.lammps_deck.empty() ? installedFile("lammps/paper-scene.lmp")
+                                            : f.scenePath("lammps", "deck", "");
+  if (c_.lammps_mode != "no" && !std::filesystem::exists(c_.lammps_deck))
+    f.fail("lammps", "deck", "the LAMMPS deck " + c_.lammps_deck + " does not exist");
+  if (c_.window < 1 || c_.window > 4) f.fail("particles", "window_cycles", "expected 1 to 4");
+  if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2");
+  if (!(c_.duration > 0)) f.fail("particles", "duration", "expected a positive time in s");
+}
+
+RunRequest& WaveFrontsStudy::add(const StudyFile& f, RunKind kind, int law,
+                                 const std::string& label, std::vector<std::string> overrides,
+                                 double duration) {
+  if (kind == RunKind::Particles)
+    overrides.push_back(fmt::format("run.duration={}", formatCompact(duration)));
+  RunRequest q = runRequest(kind, label, c_.scenes.scene(f, law, overrides));
+  q.window_cycles = c_.window;
+  q.blocks = c_.blocks;
+  requests_.push_back(std::move(q));
+  return requests_.back();
+}
+
+// The runs of one law: the paper's scene over seeds, hydro with both closures, the N sweep,
+// the failure map, and the simpler models.
+void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
+  using C = WaveFrontsConfig;
+  const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
+  const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
+  for (int seed : c_.seeds)
+    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("seed {}", seed)),
+        {fmt::format("run.seed={}", seed)}, c_.duration);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {}, 0);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
+      {"hydro.restitution_model=\"constant\"", constant_e}, 0);
+  for (int n : c_.counts) {
+    const std::string count = fmt::format("particles.count={}", n);
+    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("N={}", n)), {count, seed1},
+        c_.sweep_duration);
+    add(f, RunKind::Hydro, law, C::hydroRun(law, fmt::format("N={}", n)), {count}, 0);
+  }
+  // Where methods fail: ED without TC, hydro over Gamma x grid x tolerance. A failure of these
+  // runs is a result, and the progress lines say so.
+  const std::string expected = "expected failure (failure map)";
+  for (double gamma : c_.fail_gammas) {
+    const std::string drive = fmt::format("drive.gamma={}", formatCompact(gamma));
+    add(f, RunKind::Particles, law,
+        C::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))),
+        {"contact.tc=\"off\"", drive, seed1}, c_.fail_duration)
+        .failure_note = expected;
+    for (int cells : c_.fail_cells)
+      for (double rtol : c_.fail_rtol)
+        add(f, RunKind::Hydro, law, C::failureHydroRun(law, gamma, cells, rtol),
+            {drive, fmt::format("hydro.cells={}", cells),
+             fmt::format("hydro.rtol={}", formatCompact(rtol))},
+            0)
+            .failure_note = expected;
+  }
+  // Simpler models than the full particle model, with the same seeds (the wet layer's
+  // period is bistable: one seed would not say which period a model gives).
+  for (int sd : c_.seeds) {
+    const std::string seed = fmt::format("run.seed={}", sd);
+    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("no rotation seed {}", sd)),
+        {"contact.friction=0", seed}, c_.duration);
+    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("constant e seed {}", sd)),
+        {"contact.restitution=\"constant\"", constant_e, seed}, c_.duration);
+  }
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
+      0);
+  // Rough particles: the rotational temperature as a field (docs/hydro.md, "Rough particles"),
+  // the continuum's answer to the particles' friction.
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "rough"), {"hydro.particles=\"rough\""}, 0);
+}
+
+// The wet law's parameters (Fig. 6b), and cost against accuracy for the wet layer: ED over the
+// cycles averaged, hydro over grid x tolerance.
+void WaveFrontsStudy::planWetSweeps(const StudyFile& f) {
+  using C = WaveFrontsConfig;
+  const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
+  for (const auto& [key, values] : {std::pair{"St_c", c_.stokes}, std::pair{"e_inf", c_.e_inf}})
+    for (double v : values) {
+      const std::string tag = fmt::format("{}={}", key, formatCompact(v));
+      const std::string set =
+          fmt::format("contact.{}={}", std::string(key) == "St_c" ? "stokes_critical" : "e_inf",
+                      formatCompact(v));
+      add(f, RunKind::Particles, 1, C::particleRun(1, tag), {set, seed1}, c_.sweep_duration);
+      add(f, RunKind::Hydro, 1, C::hydroRun(1, tag), {set}, 0);
+    }
+  for (double d : c_.cost_durations)
+    add(f, RunKind::Particles, 1, C::particleRun(1, fmt::format("{} s", formatCompact(d))), {seed1},
+        d);
+  for (int cells : c_.cost_cells)
+    for (double rtol : c_.cost_rtol)
+      add(f, RunKind::Hydro, 1, C::costHydroRun(cells, rtol),
+          {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", formatCompact(rtol))},
+          0);
+}
+
+WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) {
+  readKeys(f);
+  c_.scenes.loadBase(f);
+  for (int law = 0; law < kLaws; ++law) {
+    if (!(c_.scenes.base[law].drive.frequency > 0))
+      f.fail("scenes", kLawNames[law], "the wave-fronts study needs a driven scene");
+    c_.e_eff[law] = effectiveRestitutionAtT0(c_.scenes.base[law]);
+  }
+  for (int law = 0; law < kLaws; ++law) planLaw(f, law);
+  if (c_.lammps_mode != "no") addLammps(f);
+  planWetSweeps(f);
+}
+
+// The LAMMPS run of the paper's dry scene (studies/lammps/paper-scene.lmp; its contact model
+// has a constant e_n = 0.9, so it stands beside the dry particles). Installs Debian's lammps if
+// asked and missing; otherwise a missing executable is a study-file error.
+void WaveFrontsStudy::addLammps(StudyFile& f) {
+  std::string program = findProgram(c_.lammps_executable);
+  if (program.empty() && c_.lammps_install) {
+    fmt::print(stderr, "granwave study: installing Debian's lammps ([lammps] install = true)\n");
+    const int rc = std::system(
+        "DEBIAN_FRONTEND=noninteractive $( [ \"$(id -u)\" -eq 0 ] || echo sudo ) apt-get "
+        "install -y -qq --no-install-recommends lammps >&2");
+    if (rc != 0) f.fail("lammps", "install", "apt-get install lammps failed");
+    program = findProgram(c_.lammps_executable);
+  }
+  if (program.empty() && c_.lammps_mode == "auto") return;  // not installed: left out
+  if (program.empty())
+    f.fail("lammps", "executable",
+           "not found on PATH: install Debian's lammps (apt-get install lammps) or set "
+           "[lammps] install = true");
+  std::ifstream deck(c_.lammps_deck);
+  std::ostringstream text;
+  text << deck.rdbuf();
+  RunRequest q = runRequest(RunKind::Lammps, c_.lammpsRun(), c_.scenes.base[0]);
+  q.program = program;
+  q.deck_path = c_.lammps_deck;
+  q.deck_text = text.str();
+  q.variables = {"duration", formatCompact(c_.lammps_duration), "seed",
+                 std::to_string(c_.lammps_seed)};
+  requests_.push_back(std::move(q));
+  c_.lammps = true;
+}
+
+void WaveFrontsStudy::analyse(const RunSet& runs, h5::File& results, Report& report) const {
+  const WaveFrontsResults r = analyseWaveFronts(c_, runs);
+  writeWaveFrontsResults(results, c_, r);
+  reportWaveFronts(c_, r, report);
+}
+
+std::unique_ptr<Study> makeWaveFrontsStudy(StudyFile& file) {
+  return std::make_unique<WaveFrontsStudy>(file);
+}
+
+}  // namespace granwave

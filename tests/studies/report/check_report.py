@@ -1,0 +1,191 @@
+#!/usr/bin/python3
+"""Render a granwave HTML report in headless Chromium and check what it shows.
+
+Usage: check_report.py REPORT.html
+
+Checks the DOM after scripts ran: every figure image decoded, every table has
+body rows each holding a number (or the reason a run failed), no empty cell or
+figure, at least one <h2>, and no sideways scrolling in a 1280 px wide window
+(wide tables wrap);
+and that a screenshot shows something.  Exit 0 if all good, else 1 with one
+line per failure on stderr.
+"""
+import os
+import pathlib
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+from html.parser import HTMLParser
+
+NUMBER = re.compile(r"[-+]?\d+(\.\d+)?([eE][-+]?\d+)?")
+TIMEOUT_S = 120
+WINDOW = (1280, 1000)  # px, a laptop screen
+MIN_SCREENSHOT_BYTES = 10 * 1024
+
+
+class ReportDom(HTMLParser):
+    """Collects what the checks need from a dumped DOM."""
+
+    def __init__(self):
+        super().__init__(convert_charrefs=True)
+        self.body_attrs = {}
+        self.img_srcs = []
+        self.h2_count = 0
+        self.tables = []      # per table: list of (in_thead, [cell texts]) rows
+        self.figures = []     # per figure: list of img srcs inside it
+        self._tables = []     # stack of open tables: [rows, section]
+        self._cell = None     # text pieces of the open <td>/<th>
+        self._figure = None   # img srcs of the open <figure>
+
+    def handle_starttag(self, tag, attrs):
+        attrs = dict(attrs)
+        if tag == "body":
+            self.body_attrs = attrs
+        elif tag == "img":
+            self.img_srcs.append(attrs.get("src") or "")
+            if self._figure is not None:
+                self._figure.append(attrs.get("src") or "")
+        elif tag == "h2":
+            self.h2_count += 1
+        elif tag == "figure":
+            self._figure = []
+            self.figures.append(self._figure)
+        elif tag == "table":
+            self._tables.append([[], "tbody"])
+        elif self._tables and tag in ("thead", "tbody", "tfoot"):
+            self._tables[-1][1] = tag
+        elif self._tables and tag == "tr":
+            self._tables[-1][0].append((self._tables[-1][1] == "thead", []))
+        elif self._tables and tag in ("td", "th"):
+            self._cell = []
+
+    def handle_endtag(self, tag):
+        if tag == "figure":
+            self._figure = None
+        elif tag == "table" and self._tables:
+            self.tables.append(self._tables.pop()[0])
+        elif tag in ("thead", "tbody", "tfoot") and self._tables:
+            self._tables[-1][1] = "tbody"
+        elif tag in ("td", "th") and self._cell is not None:
+            rows = self._tables[-1][0] if self._tables else []
+            if rows:
+                rows[-1][1].append("".join(self._cell).strip())
+            self._cell = None
+
+    def handle_data(self, data):
+        if self._cell is not None:
+            self._cell.append(data)
+
+
+def run_chromium(chromium, tmp, name, output_arg, url):
+    """Run headless Chromium once with a fresh profile; return its stdout text."""
+    profile = tempfile.mkdtemp(prefix=f"profile-{name}-", dir=tmp)
+    cmd = [chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+           "--no-first-run", "--disable-background-networking", "--disable-component-update",
+           "--disable-sync", f"--user-data-dir={profile}", "--virtual-time-budget=5000",
+           f"--window-size={WINDOW[0]},{WINDOW[1]}",
+           output_arg, url]
+    proc = subprocess.run(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, timeout=TIMEOUT_S, check=False)
+    if proc.returncode != 0:
+        raise RuntimeError(f"chromium ({name}) exited with status {proc.returncode}")
+    return proc.stdout.decode("utf-8", errors="replace")
+
+
+def check_dom(dom):
+    """Return the list of failures found in the dumped DOM."""
+    failures = []
+    loaded = dom.body_attrs.get("data-figures-loaded")
+    n_img = len(dom.img_srcs)
+    if loaded is None:
+        failures.append("<body> has no data-figures-loaded attribute (page script did not run)")
+    else:
+        match = re.fullmatch(r"(\d+)/(\d+)", loaded)
+        if not match:
+            failures.append(f'malformed data-figures-loaded="{loaded}"')
+        elif int(match[2]) < 1:
+            failures.append("the page has no figures")
+        elif match[1] != match[2]:
+            failures.append(f"only {match[1]} of {match[2]} figure images loaded")
+        elif int(match[2]) != n_img:
+            failures.append(f'data-figures-loaded="{loaded}" but the DOM has {n_img} <img>')
+    width = dom.body_attrs.get("data-page-width")
+    match = re.fullmatch(r"(\d+)/(\d+)", width or "")
+    if not match:
+        failures.append(f'<body> has no usable data-page-width ("{width}")')
+    elif int(match[1]) > int(match[2]):
+        failures.append(f"the page is {match[1]} px wide in a {match[2]} px window: "
+                        "it scrolls sideways")
+    tables_attr = dom.body_attrs.get("data-tables")
+    if tables_attr is not None and tables_attr != str(len(dom.tables)):
+        failures.append(f'data-tables="{tables_attr}" but the DOM has {len(dom.tables)} tables')
+    for t, rows in enumerate(dom.tables, 1):
+        if any(in_head and not all(cells) for in_head, cells in rows):
+            failures.append(f"table {t} has an empty header cell")
+        body = [cells for in_head, cells in rows if not in_head]
+        if not body:
+            failures.append(f"table {t} has no body rows")
+        for r, cells in enumerate(body, 1):
+            if not cells or not all(cells):
+                failures.append(f"table {t} body row {r} has an empty cell")
+            # A row without any number must say why: a run that failed is a result
+            # (where a method breaks down), reported with its reason.
+            if not any(NUMBER.search(c) for c in cells) and not any("fail" in c for c in cells):
+                failures.append(f"table {t} body row {r} has no number: "
+                                f"{' | '.join(cells)[:80]!r}")
+    for f, srcs in enumerate(dom.figures, 1):
+        if not any(srcs):
+            failures.append(f"figure {f} has no image")
+    if dom.h2_count < 1:
+        failures.append("the page has no <h2> section heading")
+    return failures
+
+
+def check(path, chromium):
+    """Render `path` and return the list of failures (empty if all good)."""
+    url = pathlib.Path(path).resolve().as_uri()  # file:///abs/path, percent-encoded
+    tmp = tempfile.mkdtemp(prefix="check_report-")
+    try:
+        dom = ReportDom()
+        dom.feed(run_chromium(chromium, tmp, "dom", "--dump-dom", url))
+        dom.close()
+        failures = check_dom(dom)
+        shot = os.path.join(tmp, "shot.png")
+        run_chromium(chromium, tmp, "shot", f"--screenshot={shot}", url)
+        if not os.path.isfile(shot):
+            failures.append("chromium wrote no screenshot")
+        elif os.path.getsize(shot) <= MIN_SCREENSHOT_BYTES:
+            failures.append(f"screenshot is only {os.path.getsize(shot)} bytes: page looks blank")
+        return failures
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def main(argv):
+    """Command-line entry point; returns the exit status."""
+    if len(argv) != 2:
+        print("usage: check_report.py REPORT.html", file=sys.stderr)
+        return 1
+    path = argv[1]
+    chromium = shutil.which("chromium")
+    if chromium is None:
+        print("check_report: chromium not installed (apt-get install chromium)", file=sys.stderr)
+        return 1
+    if not os.path.isfile(path):
+        print(f"check_report: {path}: no such file", file=sys.stderr)
+        return 1
+    try:
+        failures = check(path, chromium)
+    except (OSError, RuntimeError, subprocess.TimeoutExpired) as err:
+        failures = [str(err).splitlines()[0] if str(err) else type(err).__name__]
+    for failure in failures:
+        print(f"check_report: {path}: {failure}", file=sys.stderr)
+    if not failures:
+        print(f"check_report: {path}: ok")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

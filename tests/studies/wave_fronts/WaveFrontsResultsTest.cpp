@@ -1,0 +1,41 @@
+// The tiny wave-fronts study (tests/studies/data/tiny-wave-fronts.toml).
+//
+// Without the TC model the wet law is completely inelastic below its onset velocity
+// (e = 0), and an event-driven engine then meets inelastic collapse, infinitely many
+// collisions in finite time, as soon as particles rest on each other (McNamara & Young,
+// Phys. Fluids A 4, 496 (1992)): every wet failure-map run without TC stops at a finite time
+// within its duration. The continuum's impact front in the dry layer travels up from the plate:
+// its lab-frame speed is positive beyond 3 of its stated sigma. (The wet continuum doubles its
+// period and its impacts heat the layer to only 0.2-0.6 T0, below the front threshold of
+// 0.5 T0 for more than a phase or two, so it has no front to test; docs/hydro.md.)
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "tests/studies/framework/TinyStudy.hpp"
+
+namespace {
+
+constexpr char kKind[] = "wave-fronts";
+using WaveFrontsResults = granwave::testing::TinyStudyTest<kKind>;
+const std::string kRoot = "/results/wave_fronts";
+constexpr double kFailureDuration = 0.5;  // s, the tiny study file's [failure] duration
+
+TEST_F(WaveFrontsResults, WetLayerWithoutTheTcModelCollapsesInelastically) {
+  const auto times = study().series(kRoot + "/failure/ed_no_tc_collapse_time_wet");
+  ASSERT_FALSE(times.empty());
+  for (double t : times) {
+    EXPECT_TRUE(std::isfinite(t)) << "the wet run without TC did not collapse";
+    EXPECT_GT(t, 0);
+    EXPECT_LE(t, kFailureDuration);
+  }
+}
+
+TEST_F(WaveFrontsResults, DryContinuumImpactFrontTravelsUpFromThePlate) {
+  const std::string g = kRoot + "/hydro_dry_velocity";
+  const double v = study().value(g, "all"), e = study().value(g, "all_error");
+  EXPECT_GT(v, 3 * e) << v << " +- " << e << " m/s";
+}
+
+}  // namespace
