@@ -107,7 +107,8 @@ void plateFrameFields(const hydro::HydroResult& r, double mass, HydroRunContent&
 }
 
 // Lab-frame profiles on the coarse-graining grid, and the same fronts as `fields` finds.
-void labFrameFields(const Scene& scene, const SceneDerived& dv, const hydro::HydroResult& r, int samples_per_cycle, HydroRunContent& c) {
+void labFrameFields(const Scene& scene, const SceneDerived& dv, const hydro::HydroResult& r,
+                    int samples_per_cycle, HydroRunContent& c) {
   const FieldGrid grid = FieldGrid::forContainer(scene.container.width, scene.container.height,
                                                  dv.amplitude, scene.particles.diameter);
   PhaseFields lab;

@@ -106,8 +106,7 @@ std::vector<GallerySnapshot> gallery(const StabilityConfig& c, const RunSet& run
 // The hydro period of every point: NaN where it failed or was not run, 0 with no period.
 std::vector<double> hydroPeriods(const std::vector<HydroPoint>& hydro) {
   std::vector<double> out;
-  for (const HydroPoint& h : hydro)
-    out.push_back(h.ok ? (h.periodic ? h.period : 0) : NAN);
+  for (const HydroPoint& h : hydro) out.push_back(h.ok ? (h.periodic ? h.period : 0) : NAN);
   return out;
 }
 

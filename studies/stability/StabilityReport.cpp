@@ -126,7 +126,7 @@ Table everyPoint(const StabilityConfig& c, const StabilityResults& r) {
       "<|psi6|> and bonds kept (over the 15 cycles, which decides, and from one cycle to the "
       "next, reported) over the classified seeds, and how many seeds show surface waves "
       "or kinks. Hydro: one run per point (the continuum has no seed).";
-  t.columns = {"f (Hz)",    "Gamma",     "dry (particles)",  "wet (particles)",
+  t.columns = {"f (Hz)",    "Gamma",     "dry (particles)", "wet (particles)",
                "hydro dry", "hydro wet", "hydro rough dry", "hydro rough wet"};
   const std::size_t NG = c.gammas.size();
   for (std::size_t i = 0; i < c.frequencies.size(); ++i)
@@ -305,9 +305,8 @@ void reportStability(const StabilityConfig& c, const StabilityResults& r, Report
   if (c.hydro)
     s.addText("Continuum against particles. " +
               continuumAgreement(c, r, r.hydro, "Smooth-disk hydro") +
-              (c.hydro_rough
-                   ? " " + continuumAgreement(c, r, r.hydro_rough, "Rough-particle hydro")
-                   : std::string()));
+              (c.hydro_rough ? " " + continuumAgreement(c, r, r.hydro_rough, "Rough-particle hydro")
+                             : std::string()));
   gallerySection(c, r, report);
   report.summary = summary(c, r);
 }

@@ -227,8 +227,7 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
     for (int n : c.counts)
       r.n_sweep[law].push_back(
           sweepPoint(runs, WaveFrontsConfig::particleRun(law, fmt::format("N={}", n)),
-                     WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)),
-                     c.sweepCycles(law)));
+                     WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)), c.sweepCycles(law)));
   r.wet_sweeps[0] = wetSweep(c, runs, "St_c", c.stokes);
   r.wet_sweeps[1] = wetSweep(c, runs, "e_inf", c.e_inf);
   r.cost = costAccuracy(c, runs, r.paper[1]);

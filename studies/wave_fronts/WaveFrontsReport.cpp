@@ -238,19 +238,18 @@ void costPerAnswer(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report
     for (const SweepPoint& p : r.n_sweep[law]) {
       ed.push_back(p.ed_cpu_per_cycle * c.answer_cycles);
       hy.push_back(p.hydro_cpu);
-      if (first_cheaper == 0 && hy.back() < ed.back())
-        first_cheaper = c.counts[ed.size() - 1];
+      if (first_cheaper == 0 && hy.back() < ed.back()) first_cheaper = c.counts[ed.size() - 1];
     }
-    fig.series.push_back(lineSeries(x, ed, std::string("particles ") + kLawNames[law],
-                                    kLawColors[law]));
+    fig.series.push_back(
+        lineSeries(x, ed, std::string("particles ") + kLawNames[law], kLawColors[law]));
     Series hs = lineSeries(x, hy, std::string("hydro ") + kLawNames[law], kLawColors[law]);
     hs.marker = "s";
     hs.linestyle = "--";
     fig.series.push_back(hs);
-    crossover += fmt::format("{} layer: {}. ", kLawNames[law],
-                             first_cheaper ? fmt::format("hydro is cheaper per answer from N = {}",
-                                                         first_cheaper)
-                                           : std::string("hydro is not cheaper at any N run"));
+    crossover += fmt::format(
+        "{} layer: {}. ", kLawNames[law],
+        first_cheaper ? fmt::format("hydro is cheaper per answer from N = {}", first_cheaper)
+                      : std::string("hydro is not cheaper at any N run"));
   }
   s.add(std::move(fig));
   s.addText(crossover);

@@ -12,6 +12,7 @@
 #include "hydro/RestitutionClosure.hpp"
 #include "hydro/ShockRelations.hpp"
 #include "hydro/SoundSpeed.hpp"
+#include "tests/hydro/CaseGrid.hpp"
 
 using namespace granwave::hydro;
 
@@ -153,35 +154,30 @@ TEST(RankineHugoniot, ReducesToTheIdealGasForADiluteUpstream) {
 TEST(RankineHugoniot, WeakShockTravelsAtTheAdiabaticSoundSpeed) {
   // U_p -> 0: s -> c_s(nu1, theta1), including the T-dependence of Phi_P (checks 3.1's general
   // formula against the Hugoniot, which is tangent to the isentrope).
-  for (const RestitutionClosure* r : {&kE09, &kDry, &kWet}) {
-    for (double nu1 : {0.1, 0.5, 0.7}) {
-      for (double theta1 : {1e-3, 0.1}) {
+  test::forEachCase(
+      std::vector<const RestitutionClosure*>{&kE09, &kDry, &kWet}, std::vector{0.1, 0.5, 0.7},
+      std::vector{1e-3, 0.1}, [](const RestitutionClosure* r, double nu1, double theta1) {
         const double cs = adiabaticSoundSpeed(nu1, theta1, *r);
         const double U = 1e-7 * cs;  // s/c_s - 1 = O(U/c_s), coefficient ~5 at nu = 0.7
         const ShockSolution s = rankineHugoniot({nu1, theta1}, U, *r);
         EXPECT_NEAR(s.speed / cs, 1.0, 1e-5);
         EXPECT_GT(s.mach, 1.0);
-      }
-    }
-  }
+      });
 }
 
 TEST(RankineHugoniot, SolutionSatisfiesTheJumpConditions) {
-  for (const RestitutionClosure* r : {&kE09, &kDry, &kWet}) {
-    for (double nu1 : {1e-3, 0.05, 0.3, 0.5, 0.65, 0.8}) {
-      for (double theta1 : {1e-4, 0.01, 0.2}) {
-        for (double U : {0.05, 0.4, 1.5}) {
-          SCOPED_TRACE(::testing::Message() << nu1 << " " << theta1 << " " << U);
-          const GasState up{nu1, theta1};
-          const ShockSolution s = rankineHugoniot(up, U, *r);
-          EXPECT_GT(s.nu, nu1);
-          EXPECT_GT(s.theta, theta1);
-          EXPECT_GT(s.mach, 1.0);  // shocks are supersonic
-          expectJumpConditions(up, s, U, *r, 1e-10);
-        }
-      }
-    }
-  }
+  test::forEachCase(std::vector<const RestitutionClosure*>{&kE09, &kDry, &kWet},
+                    std::vector{1e-3, 0.05, 0.3, 0.5, 0.65, 0.8}, std::vector{1e-4, 0.01, 0.2},
+                    std::vector{0.05, 0.4, 1.5},
+                    [](const RestitutionClosure* r, double nu1, double theta1, double U) {
+                      SCOPED_TRACE(::testing::Message() << nu1 << " " << theta1 << " " << U);
+                      const GasState up{nu1, theta1};
+                      const ShockSolution s = rankineHugoniot(up, U, *r);
+                      EXPECT_GT(s.nu, nu1);
+                      EXPECT_GT(s.theta, theta1);
+                      EXPECT_GT(s.mach, 1.0);  // shocks are supersonic
+                      expectJumpConditions(up, s, U, *r, 1e-10);
+                    });
 }
 
 TEST(CompactionFront, SnowPloughSpeed) {

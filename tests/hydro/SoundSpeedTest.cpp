@@ -8,6 +8,7 @@
 #include "hydro/PairCorrelation.hpp"
 #include "hydro/RestitutionClosure.hpp"
 #include "hydro/SoundSpeed.hpp"
+#include "tests/hydro/CaseGrid.hpp"
 
 using namespace granwave::hydro;
 
@@ -82,31 +83,27 @@ TEST(SoundSpeed, DiluteLimitIsTheIdealGasWithGammaTwo) {
 }
 
 TEST(SoundSpeed, IsothermalIsSlowerThanAdiabatic) {
-  for (const RestitutionClosure& r :
-       {RestitutionClosure::constant(0.9), RestitutionClosure::constant(1.0),
-        RestitutionClosure::dry(0.1), RestitutionClosure::wet(0.91, 0.0698)}) {
-    for (double nu = 0.0; nu < 0.9; nu += 0.1) {
-      for (double theta : {1e-4, 1e-2, 1.0}) {
+  test::forEachCase(
+      std::vector{RestitutionClosure::constant(0.9), RestitutionClosure::constant(1.0),
+                  RestitutionClosure::dry(0.1), RestitutionClosure::wet(0.91, 0.0698)},
+      std::vector{0.0, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}, std::vector{1e-4, 1e-2, 1.0},
+      [](const RestitutionClosure& r, double nu, double theta) {
         EXPECT_LT(isothermalSoundSpeed(nu, theta, r), adiabaticSoundSpeed(nu, theta, r));
-      }
-    }
-  }
+      });
 }
 
 TEST(SoundSpeed, GeneralFormulaMatchesFiniteDifferencesOfTheEquationOfState) {
   // T-dependent Phi_P adds theta Phi_P'(theta) nu g2 to dp/dT|_n (docs/hydro.md, "Theory helpers").
-  for (const RestitutionClosure& r :
-       {RestitutionClosure::dry(0.1), RestitutionClosure::wet(0.91, 0.0698),
-        RestitutionClosure::constant(0.9)}) {
-    for (double nu : {0.05, 0.3, 0.6, 0.8}) {
-      for (double theta : {1e-4, 1e-3, 1e-2, 0.1, 1.0}) {
-        const double cs = adiabaticSoundSpeed(nu, theta, r);
-        const double cT = isothermalSoundSpeed(nu, theta, r);
-        EXPECT_NEAR(cs, soundSpeedByFiniteDifferences(nu, theta, r, true), 1e-8 * cs);
-        EXPECT_NEAR(cT, soundSpeedByFiniteDifferences(nu, theta, r, false), 1e-8 * cT);
-      }
-    }
-  }
+  test::forEachCase(std::vector{RestitutionClosure::dry(0.1), RestitutionClosure::wet(0.91, 0.0698),
+                                RestitutionClosure::constant(0.9)},
+                    std::vector{0.05, 0.3, 0.6, 0.8}, std::vector{1e-4, 1e-3, 1e-2, 0.1, 1.0},
+                    [](const RestitutionClosure& r, double nu, double theta) {
+                      const double cs = adiabaticSoundSpeed(nu, theta, r);
+                      const double cT = isothermalSoundSpeed(nu, theta, r);
+                      EXPECT_NEAR(cs, soundSpeedByFiniteDifferences(nu, theta, r, true), 1e-8 * cs);
+                      EXPECT_NEAR(cT, soundSpeedByFiniteDifferences(nu, theta, r, false),
+                                  1e-8 * cT);
+                    });
 }
 
 TEST(SoundSpeed, TemperatureDependenceOfTheClosureMatters) {
