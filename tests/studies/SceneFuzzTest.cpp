@@ -8,13 +8,16 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "particles/H5mdReader.hpp"
@@ -26,7 +29,7 @@ namespace {
 
 constexpr int kShards = 10;
 constexpr int kMutantsPerShard = 20;
-constexpr int kWallLimitSeconds = 60;  // a 0.05 s run takes a few seconds even when crawling
+constexpr int kWallLimitSeconds = 60;  // a 0.02 s run takes a few seconds even when crawling
 
 struct Key {
   const char* name;
@@ -82,26 +85,48 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-// Finite numbers everywhere and no two particles closer than d (1e-6 d of round-off).
+// The first pair of particles closer than d (1e-6 d of round-off), or {-1, -1}: a sweep along x
+// over the particles sorted by x (with images of those near x = 0 for a periodic x).
+std::pair<int, int> firstOverlap(const granwave::Snapshot& s, const granwave::Scene& scene) {
+  const double d = scene.particles.diameter, min2 = d * d * (1.0 - 2e-6);
+  struct Point {
+    double x, z;
+    int id;
+  };
+  std::vector<Point> p;
+  for (int i = 0; i < s.size(); ++i) {
+    p.push_back({s.x[i], s.z[i], i});
+    if (scene.container.periodic_x && s.x[i] < d)
+      p.push_back({s.x[i] + scene.container.width, s.z[i], i});
+  }
+  std::sort(p.begin(), p.end(), [](const Point& a, const Point& b) { return a.x < b.x; });
+  for (std::size_t a = 0; a < p.size(); ++a) {
+    for (std::size_t b = a + 1; b < p.size() && p[b].x - p[a].x < d; ++b) {
+      const double dx = p[b].x - p[a].x, dz = p[b].z - p[a].z;
+      if (p[a].id != p[b].id && dx * dx + dz * dz < min2) return {p[a].id, p[b].id};
+    }
+  }
+  return {-1, -1};
+}
+
+// Finite numbers everywhere and no overlapping particles in any frame.
 void expectSoundRun(const fs::path& file, const std::string& what) {
   granwave::H5mdReader reader(file.string());
   const granwave::Scene scene = granwave::parseSceneString(reader.sceneToml());
-  const double d = scene.particles.diameter, min2 = d * d * (1.0 - 2e-6);
-  for (std::size_t f = 0; f < reader.frameCount(); ++f) {
+  // At most about 500 frames, evenly spaced, and always the last (a NaN, once there, stays):
+  // reading 10^4 frames one by one would cost minutes.
+  const std::size_t frames = reader.frameCount();
+  const std::size_t stride = std::max<std::size_t>(1, frames / 500);
+  for (std::size_t f = 0; f < frames;
+       f = (f + stride < frames || f + 1 == frames) ? f + stride : frames - 1) {
     const granwave::Snapshot s = reader.frame(f);
     for (int i = 0; i < s.size(); ++i) {
       ASSERT_TRUE(std::isfinite(s.x[i]) && std::isfinite(s.z[i]) && std::isfinite(s.vx[i]) &&
                   std::isfinite(s.vz[i]))
           << what << ": particle " << i << " at frame " << f;
-      for (int j = i + 1; j < s.size(); ++j) {
-        double dx = s.x[i] - s.x[j];
-        if (scene.container.periodic_x)
-          dx -= scene.container.width * std::round(dx / scene.container.width);
-        const double dz = s.z[i] - s.z[j];
-        ASSERT_GE(dx * dx + dz * dz, min2)
-            << what << ": particles " << i << ", " << j << " overlap at frame " << f;
-      }
     }
+    const auto [i, j] = firstOverlap(s, scene);
+    ASSERT_EQ(i, -1) << what << ": particles " << i << ", " << j << " overlap at frame " << f;
   }
 }
 
@@ -114,9 +139,10 @@ TEST_P(SceneFuzz, MutantsNeverCrashHangOrExitZeroWithNaNOrOverlaps) {
                                                     "_" + std::to_string(shard));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  int outcomes[4] = {0, 0, 0, 0};  // exit 0 (checked), 1, 2 (refused), 3 (engine breakdown)
   for (int m = 0; m < kMutantsPerShard; ++m) {
     const char* base = rng() % 2 ? "paper-dry" : "paper-wet";
-    std::string sets = " --set run.duration=0.05";
+    std::string sets = " --set run.duration=0.02";
     const int keys = 1 + static_cast<int>(rng() % 2);
     for (int k = 0; k < keys; ++k) {
       const Key& key = kKeys[rng() % std::size(kKeys)];
@@ -128,11 +154,16 @@ TEST_P(SceneFuzz, MutantsNeverCrashHangOrExitZeroWithNaNOrOverlaps) {
                             std::to_string(kWallLimitSeconds) +
                             " '" GRANWAVE_BINARY "' simulate -q '" GRANWAVE_SOURCE_DIR "/scenes/" +
                             base + ".toml'" + sets + " -o run.h5 > out.txt 2> err.txt";
+    const auto start = std::chrono::steady_clock::now();
     const int status = std::system(cmd.c_str());
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (seconds > 5) std::printf("slow mutant (%.1f s): %s\n", seconds, what.c_str());
     ASSERT_TRUE(WIFEXITED(status)) << what << ": killed by a signal";
     const int code = WEXITSTATUS(status);
     ASSERT_NE(code, 137) << what << ": still running after " << kWallLimitSeconds << " s";
     const std::string err = slurp(dir / "err.txt");
+    if (code >= 0 && code <= 3) ++outcomes[code];
     if (code != 0) {
       EXPECT_TRUE(code == 1 || code == 2 || code == 3) << what << ": exit " << code << ": " << err;
       EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << what << ": " << err;
@@ -141,6 +172,8 @@ TEST_P(SceneFuzz, MutantsNeverCrashHangOrExitZeroWithNaNOrOverlaps) {
     }
     expectSoundRun(dir / "run.h5", what);
   }
+  std::printf("shard %d: %d ran and were checked, %d refused, %d engine breakdowns, %d other\n",
+              shard, outcomes[0], outcomes[2], outcomes[3], outcomes[1]);
   fs::remove_all(dir);
 }
 
