@@ -248,21 +248,38 @@ void EdSimulation::record() {
   next_record_ = static_cast<double>(records_) * cfg_.record_interval;
 }
 
-void EdSimulation::advanceTo(double t) {
+// Every kPollEvents events the loop looks at the interrupt flag and the event budget: at about
+// 10^6 events per second that is every few milliseconds, and the check costs nothing.
+constexpr std::uint64_t kPollEvents = 4096;
+
+void EdSimulation::checkEventBudget() const {
+  if (cfg_.max_event_rate <= 0) return;
+  const double allowed = cfg_.max_event_rate * now_ + cfg_.max_event_rate_grace;
+  if (static_cast<double>(obs_.events) > allowed)
+    throw EventLoopStall(fmt::format(
+        "the run would not finish: {} events by t = {:.6g} s, more than the limit of {:.3g} "
+        "events per simulated second (10^4 per particle per d / v, docs/scenes.md)",
+        obs_.events, now_, cfg_.max_event_rate));
+}
+
+bool EdSimulation::advanceTo(double t, const std::atomic<bool>* interrupt) {
   if (t < now_)
     throw std::invalid_argument(
         fmt::format("advanceTo({:.9g} s) would move the clock back from {:.9g} s", t, now_));
   // A stall: 5e7 events while the clock moves less than the collapse window (1e-3 d over the
   // velocity scale, where a physical run makes a handful of events per particle): a cycle of
   // events at one instant, or a Zeno cascade of ever closer ones, which would otherwise hang
-  // the run (the interrupt flag is polled only between records).
+  // the run.
   std::uint64_t stalled = 0;
   double since = now_;
   const double window = cfg_.collapse_window > 0 ? cfg_.collapse_window : 0.0;
   while (queue_.topTime() <= t) {
     now_ = queue_.topTime();
     process(queue_.top());
-    ++obs_.events;
+    if (++obs_.events % kPollEvents == 0) {
+      checkEventBudget();
+      if (interrupt && interrupt->load(std::memory_order_relaxed)) return false;
+    }
     if (now_ - since <= window) {
       if (++stalled > 50'000'000)
         throw EventLoopStall(fmt::format(
@@ -275,6 +292,7 @@ void EdSimulation::advanceTo(double t) {
     }
   }
   now_ = t;
+  return true;
 }
 
 RunStatus EdSimulation::run(const std::atomic<bool>* interrupt,
@@ -287,8 +305,11 @@ RunStatus EdSimulation::run(const std::atomic<bool>* interrupt,
   next_record_ = static_cast<double>(records_) * cfg_.record_interval;
   while (true) {
     const double t_stop = std::min(next_record_, end);
-    // The interrupt flag is polled once per record, not per event.
-    advanceTo(t_stop);
+    if (!advanceTo(t_stop, interrupt)) {
+      st.interrupted = true;
+      st.at_record = false;
+      break;
+    }
     if (now_ >= next_record_ - eps && next_record_ <= end + eps) {
       now_ = next_record_;
       record();

@@ -45,6 +45,11 @@ struct EngineConfig {
   // `collapse_window` seconds.
   std::uint32_t collapse_collisions = 2000;
   double collapse_window = 1e-6;
+  // A run that can never finish: more than max_event_rate x t + max_event_rate_grace events by
+  // simulated time t stops it (EventLoopStall). 0 = no limit. engineConfig sets 10^4 events
+  // per particle per d / v (docs/scenes.md, "Why these ranges").
+  double max_event_rate = 0;  // events per simulated second, whole system
+  double max_event_rate_grace = 0;
 };
 
 EngineConfig engineConfig(const Scene& scene);
@@ -53,6 +58,9 @@ struct RunStatus {
   bool completed = false;    // reached the duration
   bool interrupted = false;  // stopped by the interrupt flag
   bool paused = false;       // stopped because the pause predicate asked (a checkpoint)
+  // false when the interrupt came between two records: the state is then not at a record and
+  // must not be checkpointed (a later run() would not continue exactly).
+  bool at_record = true;
   double time = 0;
   std::uint64_t events = 0;
 };
@@ -66,13 +74,16 @@ class EdSimulation {
 
   void addObserver(SnapshotObserver* observer) { observers_.push_back(observer); }
   // Runs to config.duration, recording every record_interval (t = 0 included).
-  // Stops early after a record when *interrupt is set, or when pause() returns true (it
-  // is asked once per record); a later run() continues exactly where this one stopped.
+  // Stops early when *interrupt is set (polled every few thousand events, so within
+  // milliseconds even inside a long record), or after a record when pause() returns true (it
+  // is asked once per record); after a pause a later run() continues exactly where this one
+  // stopped.
   RunStatus run(const std::atomic<bool>* interrupt = nullptr,
                 const std::function<bool()>& pause = {});
   // Processes events up to time t >= now() (no recording); for tests and benchmarks.
-  // std::invalid_argument if t < now().
-  void advanceTo(double t);
+  // std::invalid_argument if t < now(). Returns false if it stopped early at *interrupt
+  // (then now() < t).
+  bool advanceTo(double t, const std::atomic<bool>* interrupt = nullptr);
 
   Snapshot snapshot() const;  // extrapolated to now()
   EngineState state() const;  // everything a restart needs, as stored
@@ -118,6 +129,7 @@ class EdSimulation {
     obs_.pair_impact_loss += impact * (1.0 - e_n * e_n);
   }
   bool tcElastic(int i, int j) const;
+  void checkEventBudget() const;
   // state
   void advance(int i, double t);
   ParticleState extrapolated(int i, double t) const;

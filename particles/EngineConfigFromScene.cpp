@@ -46,6 +46,11 @@ EngineConfig engineConfig(const Scene& scene) {
     v = std::max(v, std::sqrt(2.0 * *scene.initial.temperature / c.mass));
   c.collapse_window = v > 0 ? 1e-3 * c.diameter / v : 1e-6;
   c.collapse_collisions = 2000;
+  // 10^4 events per particle per d / v: ten times the collapse rate kept up by every particle
+  // at once; far above any physical run (a dense gas makes a few per d / v), so a run that
+  // hits it would never finish. The first 10^5 events per particle are free (a settling start).
+  c.max_event_rate = 10.0 * scene.particles.count / c.collapse_window;
+  c.max_event_rate_grace = 1e5 * scene.particles.count;
   return c;
 }
 

@@ -27,6 +27,11 @@ namespace {
 
 // Hexagonal close packing of equal disks, pi / (2 sqrt 3): the densest 2D packing.
 constexpr double kHexagonalPacking = 0.9069;
+constexpr long long kMaxParticles = 1'000'000;
+constexpr double kMaxRecords = 1e6;
+constexpr double kMaxStoredFrames = 2.5e8;
+// The cell grid has about (width / d) x (height / d) cells of 4 bytes.
+constexpr double kMaxCells = 1e7;
 
 class Checker {
  public:
@@ -46,19 +51,35 @@ class Checker {
     if (!(v >= 0 && std::isfinite(v))) fail(key, v, fmt::format("must be >= 0 ({})", unit));
   }
   // Interval with open/closed ends given as "(", "[", ")", "]".
-  void within(std::string_view key, double v, char open, double lo, double hi, char close) const {
+  void within(std::string_view key, double v, char open, double lo, double hi, char close,
+              std::string_view unit = "") const {
     const bool okLo = open == '[' ? v >= lo : v > lo;
     const bool okHi = close == ']' ? v <= hi : v < hi;
     if (!(okLo && okHi)) {
       fail(key, v,
-           fmt::format("must be in {}{}, {}{}", open, tomlNumber(lo), tomlNumber(hi), close));
+           fmt::format("must be in {}{}, {}{}{}", open, tomlNumber(lo), tomlNumber(hi), close,
+                       unit.empty() ? "" : fmt::format(" ({})", unit)));
+    }
+  }
+  // 0 (the quantity switched off) or a value in [lo, hi].
+  void zeroOrWithin(std::string_view key, double v, double lo, double hi,
+                    std::string_view unit) const {
+    if (!(v == 0 || (v >= lo && v <= hi))) {
+      fail(key, v,
+           fmt::format("must be 0 or in [{}, {}] ({})", tomlNumber(lo), tomlNumber(hi), unit));
     }
   }
   void atLeast(std::string_view key, long long v, long long min) const {
     if (v < min) fail(key, std::to_string(v), fmt::format("must be an integer >= {}", min));
   }
+  void atMost(std::string_view key, long long v, long long max, std::string_view why) const {
+    if (v > max)
+      fail(key, std::to_string(v), fmt::format("must be an integer <= {} ({})", max, why));
+  }
 
   void singleKeys() const;
+  void temperature() const;
+  void records() const;
   void drive() const;
   void geometry() const;
 
@@ -67,44 +88,89 @@ class Checker {
   const SceneOrigins& o_;
 };
 
+// Ranges (docs/scenes.md, "Why these ranges"): wide enough for any granular experiment, narrow
+// enough that every derived quantity (m, A, t_c, q, v_c, fall time sqrt(d/g)) is a normal
+// double far from under- and overflow, so that the engine's tolerances (relative to d) hold.
 void Checker::singleKeys() const {
   const auto& p = s_.particles;
   const auto& c = s_.contact;
   atLeast("particles.count", p.count, 1);
-  positive("particles.diameter", p.diameter, "m");
-  positive("particles.density", p.density, "kg/m^3");
-  positive("particles.youngs_modulus", p.youngs_modulus, "Pa");
+  atMost("particles.count", p.count, kMaxParticles, "the state of 10^6 particles fits in memory");
+  within("particles.diameter", p.diameter, '[', 1e-6, 1.0, ']', "m");
+  within("particles.density", p.density, '[', 10.0, 1e5, ']', "kg/m^3");
+  within("particles.youngs_modulus", p.youngs_modulus, '[', 1e3, 1e13, ']', "Pa");
   within("particles.poisson_ratio", p.poisson_ratio, '(', -1.0, 0.5, ')');
   positive("container.width", s_.container.width, "m");
   positive("container.height", s_.container.height, "m");
-  nonNegative("drive.frequency", s_.drive.frequency, "Hz; 0 = no drive");
-  if (s_.drive.gamma) nonNegative("drive.gamma", *s_.drive.gamma, "peak acceleration / g");
+  zeroOrWithin("drive.frequency", s_.drive.frequency, 1e-2, 1e4, "Hz; 0 = no drive");
+  if (s_.drive.gamma) zeroOrWithin("drive.gamma", *s_.drive.gamma, 1e-3, 100.0, "g");
   if (s_.drive.amplitude) nonNegative("drive.amplitude", *s_.drive.amplitude, "m");
   within("contact.e", c.e, '[', 0.0, 1.0, ']');
-  nonNegative("contact.kappa", c.kappa, "(s/m)^(1/5)");
+  within("contact.kappa", c.kappa, '[', 0.0, 10.0, ']', "(s/m)^(1/5)");
   within("contact.e_inf", c.e_inf, '(', 0.0, 1.0, ']');
-  nonNegative("contact.stokes_critical", c.stokes_critical, "dimensionless");
-  positive("contact.viscosity", c.viscosity, "Pa s");
-  nonNegative("contact.friction", c.friction, "0 = no rotation");
+  within("contact.stokes_critical", c.stokes_critical, '[', 0.0, 1e6, ']');
+  within("contact.viscosity", c.viscosity, '[', 1e-6, 1e3, ']', "Pa s");
+  within("contact.friction", c.friction, '[', 0.0, 10.0, ']', "0 = no rotation");
   within("contact.tangential_limit", c.tangential_limit, '[', -1.0, 1.0, ']');
-  if (c.tc_enabled && c.tc_time) {
-    if (!(*c.tc_time > 0 && std::isfinite(*c.tc_time)))
-      fail("contact.tc", *c.tc_time, R"(must be "auto", "off" or a time in seconds > 0)");
+  if (c.tc_enabled && c.tc_time && !(*c.tc_time >= 1e-12 && *c.tc_time <= 1.0)) {
+    fail("contact.tc", *c.tc_time, R"(must be "auto", "off" or a time in seconds in [1e-12, 1.0])");
   }
-  nonNegative("contact.rest_velocity", c.rest_velocity, "m/s");
-  if (s_.initial.temperature)
-    nonNegative("initial.temperature", *s_.initial.temperature, "J per particle");
-  positive("run.duration", s_.run.duration, "s");
+  within("contact.rest_velocity", c.rest_velocity, '[', 0.0, 1e-2, ']', "m/s");
+  within("run.duration", s_.run.duration, '(', 0.0, 1e5, ']', "s");
   atLeast("run.phases_per_cycle", s_.run.phases_per_cycle, 1);
+  atMost("run.phases_per_cycle", s_.run.phases_per_cycle, 10000, "recordings per drive cycle");
   nonNegative("run.record_interval", s_.run.record_interval, "s; 0 = duration / 100");
   atLeast("run.trajectory_stride", s_.run.trajectory_stride, 1);
   if (s_.run.seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
     fail("run.seed", std::to_string(s_.run.seed), "must be an integer in [0, 2^63 - 1]");
-  nonNegative("run.gravity", s_.run.gravity, "m/s^2, magnitude");
+  zeroOrWithin("run.gravity", s_.run.gravity, 1e-3, 1e4, "m/s^2, magnitude");
   atLeast("hydro.cells", s_.hydro.cells, 8);
-  positive("hydro.rtol", s_.hydro.rtol, "relative tolerance");
-  positive("hydro.atol", s_.hydro.atol, "absolute tolerance");
+  atMost("hydro.cells", s_.hydro.cells, 100000, "cells across the height");
+  within("hydro.rtol", s_.hydro.rtol, '[', 1e-12, 0.1, ']', "relative tolerance");
+  within("hydro.atol", s_.hydro.atol, '[', 1e-16, 1e-2, ']', "absolute tolerance");
   within("hydro.contact_pressure", s_.hydro.contact_pressure, '[', 0.0, 1e6, ']');
+}
+
+// The initial temperature as a thermal speed sqrt(2 T / m): hard spheres at more than 1 km/s
+// are outside every contact law here, and below 1e-9 m/s the squared speeds that predict
+// collisions underflow.
+void Checker::temperature() const {
+  if (!s_.initial.temperature) return;
+  const double T = *s_.initial.temperature;
+  nonNegative("initial.temperature", T, "J per particle");
+  const double m = derive(s_).mass;
+  const double speed = std::sqrt(2.0 * T / m);
+  if (T > 0 && !(speed >= 1e-9 && speed <= 1e3)) {
+    fail("initial.temperature", T,
+         fmt::format("gives a thermal speed sqrt(2 T / m) = {:.3g} m/s; it must be 0 or give a "
+                     "speed in [1e-9, 1e3] m/s, T in [{:.3g}, {:.3g}] J for m = {:.3g} kg",
+                     speed, 0.5 * m * 1e-18, 0.5 * m * 1e6, m));
+  }
+}
+
+// The number of records must fit in memory and on disk: at most 10^6 records and at most
+// 2.5e8 stored particle frames (40 bytes each, 10 GB).
+void Checker::records() const {
+  const auto& r = s_.run;
+  const bool driven = s_.drive.frequency > 0;
+  const double interval = driven ? 1.0 / (r.phases_per_cycle * s_.drive.frequency)
+                                 : (r.record_interval > 0 ? r.record_interval : r.duration / 100);
+  const double records = r.duration / interval;
+  const char* key = driven ? "run.duration" : "run.record_interval";
+  const double value = driven ? r.duration : r.record_interval;
+  if (records > kMaxRecords) {
+    fail(key, value,
+         fmt::format("makes {:.4g} records (duration x frequency x phases_per_cycle, or duration "
+                     "/ record_interval); at most 1e6 fit",
+                     records));
+  }
+  const double frames = records / r.trajectory_stride * s_.particles.count;
+  if (frames > kMaxStoredFrames) {
+    fail("run.trajectory_stride", std::to_string(r.trajectory_stride),
+         fmt::format("{:.4g} particle positions would be stored (records / stride x count); at "
+                     "most 2.5e8 (10 GB): raise the stride",
+                     frames));
+  }
 }
 
 void Checker::drive() const {
@@ -145,12 +211,27 @@ void Checker::geometry() const {
     if (length < d) {
       fail(key, length, fmt::format("smaller than one particle diameter ({} m)", tomlNumber(d)));
     }
+    // A box one particle across pins a particle between two walls at once: at length = d both
+    // gaps are zero and the wall collisions form a cycle at one instant (docs/scenes.md).
+    if (!periodic && length < 2 * d) {
+      fail(key, length,
+           fmt::format("a length between walls must be at least 2 particle diameters ({} m); a "
+                       "column one particle wide is not supported",
+                       tomlNumber(2 * d)));
+    }
     if (periodic && length < 3 * d) {
       fail(key, length,
            fmt::format("a periodic length must be at least 3 particle diameters ({} m): the "
                        "engine's 3 x 3 cell stencil needs 3 cells of side >= d",
                        tomlNumber(3 * d)));
     }
+  }
+  if (std::floor(box.width / d) * std::floor(box.height / d) > kMaxCells) {
+    fail("container.width", box.width,
+         fmt::format("with container.height = {} m the box holds {:.3g} cells of one diameter; at "
+                     "most 1e7 fit the engine's cell grid",
+                     tomlNumber(box.height),
+                     std::floor(box.width / d) * std::floor(box.height / d)));
   }
   const double occupied = s_.particles.count * std::numbers::pi * d * d / 4.0;
   const double available = kHexagonalPacking * box.width * box.height;
@@ -168,6 +249,8 @@ void Checker::geometry() const {
 void validateScene(const Scene& scene, const SceneOrigins& origins) {
   Checker check(scene, origins);
   check.singleKeys();
+  check.temperature();
+  check.records();
   check.geometry();
   check.drive();
 }

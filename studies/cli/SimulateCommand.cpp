@@ -151,8 +151,10 @@ class SimulationRun {
       last_save = secondsSince(started);
       last_checkpoint = std::chrono::steady_clock::now();
     }
-    // Nothing is lost on Ctrl-C: the same command continues from here.
-    if (status.interrupted && checkpoint_) saveCheckpoint();
+    // Little is lost on Ctrl-C: the same command continues from here, or, if the interrupt
+    // came between two records, from the last checkpoint (a state between records cannot be
+    // continued exactly).
+    if (status.interrupted && status.at_record && checkpoint_) saveCheckpoint();
     return status;
   }
 

@@ -273,11 +273,11 @@ TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
 
 TEST(SceneToToml, RoundTripsDoublesBitForBit) {
   Scene s;
-  s.particles.density = 0.1 + 0.2;
+  s.particles.density = (0.1 + 0.2) * 1e4;
   s.particles.youngs_modulus = 1.2345678901234567e11;
   s.contact.viscosity = 1.0 / 3.0;
   s.contact.rest_velocity = 5e-324;
-  s.hydro.atol = 1e-300;
+  s.hydro.atol = 1e-10 / 3.0;
   s.run.seed = 9223372036854775807u;
   expectSameScene(parseSceneString(sceneToToml(s)), s);
 }

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -134,7 +135,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadScene{"AmplitudeTooLarge", "[drive]\namplitude = 0.04\ngamma = 4\n", "drive"},
         BadScene{"ImpossibleAmplitude", "[drive]\ngamma = 100\n", "amplitude"},
         BadScene{"BadLaw", "[contact]\nrestitution = \"sticky\"\n", "contact.restitution"},
-        BadScene{"PeriodicZWithDrive", "[container]\nperiodic_z = true\n", "periodic_z"}),
+        BadScene{"PeriodicZWithDrive", "[container]\nperiodic_z = true\n", "periodic_z"},
+        BadScene{"SubnormalGravity", "[run]\ngravity = 5e-324\n", "run.gravity"},
+        BadScene{"EndlessDrive", "[drive]\nfrequency = 1e6\n", "drive.frequency"},
+        BadScene{"EndlessDuration", "[run]\nduration = 1e300\n", "run.duration"},
+        BadScene{"OneDiameterWide", "[container]\nwidth = 0.002\n[particles]\ncount = 10\n",
+                 "container.width"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 TEST_F(SimulateCli, MissingSceneFileIsAnError) {
@@ -177,6 +183,28 @@ TEST_F(SimulateCli, InterruptSavesPartialRunUnderInterruptedName) {
   EXPECT_FALSE(reader.completed());
   EXPECT_GT(reader.frameCount(), 1u);
   EXPECT_EQ(stray("run.h5.interrupted"), 0);
+}
+
+TEST_F(SimulateCli, SigtermInsideALongRecordStopsWithinOneSecond) {
+  // An elastic gas recorded every 500 s: the signal arrives long before the second record.
+  const std::string scene =
+      write("gas.toml",
+            "[container]\nperiodic_x = true\nperiodic_z = true\n[drive]\nfrequency = 0\n"
+            "[contact]\nrestitution = \"constant\"\ne = 1\nfriction = 0\ntc = \"off\"\n"
+            "[initial]\ntemperature = 1e-6\n[run]\ngravity = 0\nduration = 1000\n"
+            "record_interval = 500\n");
+  const auto start = std::chrono::steady_clock::now();
+  const Result r =
+      run("simulate -q " + scene + " -o run.h5", "timeout --preserve-status -s TERM 1.5");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(r.code, 130) << r.err;
+  EXPECT_LT(seconds, 1.5 + 1.0) << "the signal was not honoured within 1 s";
+  EXPECT_FALSE(fs::exists(dir_ / "run.h5"));
+  ASSERT_TRUE(fs::exists(dir_ / "run.h5.interrupted")) << r.err;
+  granwave::H5mdReader reader((dir_ / "run.h5.interrupted").string());
+  EXPECT_FALSE(reader.completed());
+  EXPECT_EQ(reader.frameCount(), 1u);  // the record at t = 0
 }
 
 // Exit codes of checkpointed runs (studies/ExitCode.hpp): a failure outside the run is 75 and
