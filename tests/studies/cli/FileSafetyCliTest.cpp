@@ -114,10 +114,20 @@ TEST_F(FileSafetyCli, FieldsAndExportRefuseToOverwriteTheirRunFile) {
   const std::string before = slurp(dir_ / "run.h5");
   expectRefusal(run("fields run.h5 -o run.h5"), "would overwrite the run file");
   expectRefusal(run("fields run.h5 -o run.xdmf"), "would be the same file");
+  expectRefusal(run("fields run.h5 -o /dev/full"), "/dev/full: is a character device");
+  expectRefusal(run("export run.h5 -o /dev/full"), "/dev/full: is a character device");
   fs::create_hard_link(dir_ / "run.h5", dir_ / "link.h5");
   expectRefusal(run("fields run.h5 -o link.h5"), "would overwrite the run file");
   expectRefusal(run("export run.h5 -o link.h5"), "would overwrite the run file");
   EXPECT_EQ(slurp(dir_ / "run.h5"), before);
+}
+
+TEST_F(FileSafetyCli, FailedFieldsStepLeavesNeitherTheFieldsNorTheRunFile) {
+  // 0.3 s (3 cycles) holds no steady cycle to average: the fields analysis fails at the end.
+  const Result r = run("simulate -q s.toml -o r.h5 --fields f.h5");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("no steady cycles"), std::string::npos) << r.err;
+  EXPECT_EQ(stray(), 0) << "the run file of a failed --fields run was left";
 }
 
 TEST_F(FileSafetyCli, FifoAndDeviceInputsAreRefusedWithoutBlocking) {
