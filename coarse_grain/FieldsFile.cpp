@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
 
 namespace granwave {
@@ -63,15 +64,18 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name, const F
     s += "</Grid>\n";
   }
   s += "</Grid>\n</Domain>\n</Xdmf>\n";
-  const std::string tmp = xdmf_path + ".tmp";
+  const std::string tmp = files::temporaryFor(xdmf_path);
   {
     std::ofstream out(tmp, std::ios::trunc);
     out << s;
     out.flush();
     // A system_error (errno: disk full, permissions) marks this as a file failure, exit 74.
-    if (!out)
-      throw std::system_error(errno ? errno : EIO, std::generic_category(),
+    if (!out) {
+      const int error = errno ? errno : EIO;
+      std::remove(tmp.c_str());
+      throw std::system_error(error, std::generic_category(),
                               xdmf_path + ": cannot write the XDMF sidecar");
+    }
   }
   std::filesystem::rename(tmp, xdmf_path);
 }
@@ -224,7 +228,13 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
                            a.front_options.layer_min_area_fraction);
   f.writeStringDataset("/parameters/scene", a.context.scene_toml);
   af.commit();
-  writeXdmf(xdmfSidecarPath(path), std::filesystem::path(path).filename().string(), a);
+  // The pair or neither: a fields file without its sidecar is removed again.
+  try {
+    writeXdmf(xdmfSidecarPath(path), std::filesystem::path(path).filename().string(), a);
+  } catch (...) {
+    std::remove(path.c_str());
+    throw;
+  }
 }
 
 }  // namespace granwave

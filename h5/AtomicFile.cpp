@@ -8,14 +8,11 @@
 #include <cstring>
 #include <filesystem>
 
+#include "files/OutputPath.hpp"
 #include "h5/H5Error.hpp"
 
 namespace granwave::h5 {
 namespace {
-
-std::string temporaryFor(const std::string& target) {
-  return target + ".tmp-" + std::to_string(::getpid());
-}
 
 // Forces the bytes to disk before the rename publishes them; otherwise a power loss right
 // after the rename could leave a complete-looking name over incomplete contents.
@@ -26,8 +23,19 @@ void syncPath(const std::string& path, int flags) {
   ::close(fd);
 }
 
+// A target that is not a regular file or a new name in an existing directory (a device, a
+// directory) is refused before anything is written: the rename would replace it.
+void requireOutputPath(const std::string& target) {
+  try {
+    files::requireOutputPath(target);
+  } catch (const files::PathError& e) {
+    throw H5Error(e.what());
+  }
+}
+
 // HDF5 may leave a partial file behind when creation fails half-way.
 File createOrRemove(const std::string& temporary, const std::string& target) {
+  requireOutputPath(target);
   try {
     return File::create(temporary, target);
   } catch (...) {
@@ -37,6 +45,7 @@ File createOrRemove(const std::string& temporary, const std::string& target) {
 }
 
 File copyAndOpen(const std::string& from, const std::string& temporary, const std::string& target) {
+  requireOutputPath(target);
   std::error_code ec;
   std::filesystem::copy_file(from, temporary, std::filesystem::copy_options::overwrite_existing,
                              ec);
@@ -61,12 +70,12 @@ std::string directoryOf(const std::string& path) {
 
 AtomicFile::AtomicFile(std::string target)
     : target_(std::move(target)),
-      temporary_(temporaryFor(target_)),
+      temporary_(files::temporaryFor(target_)),
       file_(createOrRemove(temporary_, target_)) {}
 
 AtomicFile::AtomicFile(std::string target, const std::string& continue_from)
     : target_(std::move(target)),
-      temporary_(temporaryFor(target_)),
+      temporary_(files::temporaryFor(target_)),
       file_(copyAndOpen(continue_from, temporary_, target_)) {}
 
 AtomicFile::~AtomicFile() {
@@ -95,7 +104,7 @@ void AtomicFile::commitTo(const std::string& path) {
 void AtomicFile::copyTo(const std::string& path) {
   if (committed_) throw H5Error(target_ + ": already committed");
   file_.flush();
-  const std::string partial = path + ".tmp-" + std::to_string(::getpid());
+  const std::string partial = files::temporaryFor(path);
   std::error_code ec;
   std::filesystem::copy_file(temporary_, partial, std::filesystem::copy_options::overwrite_existing,
                              ec);

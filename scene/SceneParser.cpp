@@ -403,7 +403,18 @@ Scene parseSceneFile(const std::string& path, const std::vector<std::string>& ov
   if (!in) throw SceneError(fmt::format("{}: cannot open scene file", path));
   std::ostringstream text;
   text << in.rdbuf();
-  return parseSceneString(text.str(), overrides, path);
+  Scene scene = parseSceneString(text.str(), overrides, path);
+  const bool named_in_file = toml::parse(text.str())["contact"]["restitution"].is_value();
+  const bool named_by_override =
+      std::any_of(overrides.begin(), overrides.end(), [](const std::string& o) {
+        return o.rfind("contact.restitution=", 0) == 0 || o.rfind("contact.restitution =", 0) == 0;
+      });
+  if (!named_in_file && !named_by_override)
+    throw SceneError(fmt::format(
+        "{}: {}names no restitution law; add [contact] restitution = \"dry\" (or \"wet\", "
+        "\"constant\") or --set contact.restitution=dry",
+        path, text.str().find_first_not_of(" \t\r\n") == std::string::npos ? "is empty and " : ""));
+  return scene;
 }
 
 }  // namespace granwave

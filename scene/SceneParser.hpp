@@ -20,7 +20,10 @@ class SceneError : public std::runtime_error {
 };
 
 // Reads and validates a scene file; `overrides` are "section.key=value" strings whose value
-// is a TOML value (a bare word is taken as a string: contact.restitution=wet).
+// is a TOML value (a bare word is taken as a string: contact.restitution=wet). The file (or an
+// override) must name its restitution law, contact.restitution: every other key has the
+// paper's value as default, but an empty or truncated file must not silently become the dry
+// scene (docs/scenes.md). Strings (parseSceneString) keep the defaults for every key.
 Scene parseSceneFile(const std::string& path, const std::vector<std::string>& overrides = {});
 
 // Same for a scene held in memory; `origin` names it in error messages.

@@ -10,7 +10,9 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "files/OutputPath.hpp"
 #include "particles/H5mdReader.hpp"
+#include "studies/cli/OptionChecks.hpp"
 
 namespace granwave {
 
@@ -41,7 +43,7 @@ void addExportCommand(CLI::App& app, ExportOptions& opt) {
       "export", "Write a run's trajectory for other tools (extended XYZ: ASE, OVITO)");
   cmd->add_option("run", opt.run_path, "Run file (H5MD, from granwave simulate)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Output file; default <run>.extxyz");
   cmd->add_option("--format", opt.format, "Output format")
       ->check(CLI::IsMember({"extxyz"}))
@@ -56,12 +58,11 @@ int runExport(const ExportOptions& opt) {
   std::string out = opt.output;
   if (out.empty())
     out = (std::filesystem::path(opt.run_path).replace_extension(".extxyz")).string();
+  files::requireDistinct({{"run file", opt.run_path}}, {{"export", out}});
   std::error_code ec;
-  if (std::filesystem::equivalent(out, opt.run_path, ec))
-    throw std::runtime_error(out + ": the output would overwrite the run file");
   const double radius = 0.5 * run.box().thickness;  // the box is one diameter thick
   // Atomically: a temporary beside the output, renamed when complete.
-  const std::string tmp = out + ".tmp-" + std::to_string(::getpid());
+  const std::string tmp = files::temporaryFor(out);
   {
     std::ofstream file(tmp, std::ios::trunc);
     for (std::size_t i = 0; i < run.frameCount(); i += static_cast<std::size_t>(opt.every))

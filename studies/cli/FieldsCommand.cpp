@@ -9,9 +9,11 @@
 #include "coarse_grain/FieldsFile.hpp"
 #include "coarse_grain/PeriodDetector.hpp"
 #include "coarse_grain/SteadyStateDetector.hpp"
+#include "files/OutputPath.hpp"
 #include "particles/H5mdReader.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/FieldsSetup.hpp"
+#include "studies/cli/OptionChecks.hpp"
 
 namespace granwave {
 
@@ -34,7 +36,7 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
       app.add_subcommand("fields", "Phase-averaged fields, profiles and wave fronts of a run");
   cmd->add_option("run", opt.run_path, "Run file written by granwave simulate (every record)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Fields file (HDF5 + .xdmf); default <run>.fields.h5");
   cmd->add_option(
       "--period", opt.period,
@@ -44,12 +46,18 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
   cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number");
   cmd->add_option("--front-threshold", opt.front_threshold,
                   "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
-      ->check(CLI::Range(0.01, 100.0));
+      ->check(CLI::Range(0.01, 100.0))
+      ->check(finiteNumber());
 }
 
 int runFields(const FieldsOptions& opt) {
   const int period_choice = parseChoice(opt.period, "--period", 1, 4);
   const int discard_choice = parseChoice(opt.discard, "--discard", 0, 1000000);
+  std::string out = opt.output;
+  if (out.empty())
+    out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
+  files::requireDistinct({{"run file", opt.run_path}},
+                         {{"fields file", out}, {"fields sidecar", xdmfSidecarPath(out)}});
   const H5mdReader run(opt.run_path);
   const Scene scene = parseSceneString(run.sceneToml(), {}, opt.run_path + ":/parameters/scene");
   if (scene.drive.frequency <= 0)
@@ -95,9 +103,6 @@ int runFields(const FieldsOptions& opt) {
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.particles.diameter,
                                 scene.container.periodic_x);
-  std::string out = opt.output;
-  if (out.empty())
-    out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);

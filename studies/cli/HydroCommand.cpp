@@ -11,9 +11,11 @@
 
 #include "coarse_grain/FieldGrid.hpp"
 #include "coarse_grain/WaveFront.hpp"
+#include "files/OutputPath.hpp"
 #include "hydro/HydroSimulation.hpp"
 #include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/cli/OptionChecks.hpp"
 #include "studies/framework/StudyScenes.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 
@@ -198,7 +200,7 @@ void addHydroCommand(CLI::App& app, HydroOptions& opt) {
   CLI::App* cmd = app.add_subcommand("hydro", "Integrate the 1D granular hydrodynamics of a scene");
   cmd->add_option("scene", opt.scene_path, "Scene file (TOML; [hydro] keys, docs/scenes.md)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Output file (HDF5); default <scene>.hydro.h5");
   cmd->add_option("--set", opt.overrides, "Override a scene key: section.key=value")->take_all();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress output");
@@ -206,6 +208,9 @@ void addHydroCommand(CLI::App& app, HydroOptions& opt) {
 
 int runHydro(const HydroOptions& opt) {
   const Scene scene = parseSceneFile(opt.scene_path, opt.overrides);
+  std::string out = opt.output;
+  if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".hydro.h5";
+  files::requireDistinct({{"scene", opt.scene_path}}, {{"hydro run file", out}});
   if (scene.drive.frequency <= 0)
     throw std::runtime_error(opt.scene_path +
                              ": granwave hydro needs a driven scene (drive.frequency > 0)");
@@ -222,8 +227,6 @@ int runHydro(const HydroOptions& opt) {
                scene.hydro.cells);
   const hydro::HydroResult r = sim.run();
   const HydroRunContent content = runContent(scene, dv, r, ro);
-  std::string out = opt.output;
-  if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".hydro.h5";
   writeHydroRunFile(out, content);
   printSummary(opt, scene, r, content.fronts, ro.samples_per_cycle, out);
   return 0;

@@ -8,15 +8,18 @@
 #include <cmath>
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "coarse_grain/FieldsFile.hpp"
 #include "coarse_grain/PhaseAverager.hpp"
+#include "files/OutputPath.hpp"
 #include "particles/EdSimulation.hpp"
 #include "particles/H5mdWriter.hpp"
 #include "particles/InitialState.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/FieldsSetup.hpp"
+#include "studies/cli/OptionChecks.hpp"
 #include "studies/cli/OutsideFailure.hpp"
 #include "studies/cli/ProgressReporter.hpp"
 #include "studies/cli/RunSummary.hpp"
@@ -74,6 +77,7 @@ class SimulationRun {
         out_(opt.output.empty() ? std::filesystem::path(opt.scene_path).stem().string() + ".h5"
                                 : opt.output),
         progress_(scene_.run.duration) {
+    refuseClashingFiles();
     if (!opt.fields.empty()) {
       averager_ = std::make_unique<PhaseAverager>(
           phaseAveragerConfig(scene_, opt.fields_period, opt.fields_blocks, -1));
@@ -174,6 +178,19 @@ class SimulationRun {
   }
 
  private:
+  // Before any work: no output over the scene, a device or another output (files/).
+  void refuseClashingFiles() const {
+    std::vector<files::NamedPath> outputs;
+    if (!opt_.no_output) outputs.push_back({"run file", out_});
+    if (!opt_.no_output && opt_.checkpoint_every > 0)
+      outputs.push_back({"checkpoint", out_ + ".checkpoint"});
+    if (!opt_.fields.empty()) {
+      outputs.push_back({"fields file", opt_.fields});
+      outputs.push_back({"fields sidecar", xdmfSidecarPath(opt_.fields)});
+    }
+    files::requireDistinct({{"scene", opt_.scene_path}}, outputs);
+  }
+
   void continueFromCheckpoint(const BoxInfo& box) {
     const std::string remedy = fmt::format("; remove {} and {}.checkpoint-*.h5md to start afresh",
                                            checkpoint_->statePath(), out_);
@@ -233,6 +250,10 @@ class SimulationRun {
     in.checkpoint_wall = checkpoint_wall_;
     in.energy_balance_error = std::abs(totalEnergy(last.obs) - in.initial_energy -
                                        last.obs.wall_work + last.obs.dissipated_energy);
+    // The fields are analysed before the run file is published: a run whose --fields step
+    // fails leaves neither file (the study would otherwise hold half a run).
+    std::optional<FieldsAnalysis> fields;
+    if (averager_ && status.completed) fields = analyseLiveFields(in);
     if (writer_) {
       const std::string stored = formatRunSummary(in, false);
       if (status.completed) {
@@ -250,20 +271,29 @@ class SimulationRun {
       return kExitInterrupted;
     }
     if (writer_) fmt::print("output          {}\n", out_);
-    if (averager_) {
-      PeriodResult period;
-      int discarded = 0;
-      const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
-      FieldsAnalysis a = analyseFields(
-          *averager_,
-          fieldsContext(scene_, "live: " + opt_.scene_path, sceneToToml(scene_), layer_period));
-      a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.particles.diameter,
-                                    scene_.container.periodic_x);
-      writeFieldsFile(opt_.fields, a);
-      fmt::print("{}", formatFieldsSummary(a));
+    if (fields) {
+      try {
+        writeFieldsFile(opt_.fields, *fields);
+      } catch (...) {
+        std::error_code ec;
+        if (writer_) std::filesystem::remove(out_, ec);
+        throw;
+      }
+      fmt::print("{}", formatFieldsSummary(*fields));
       fmt::print("fields output   {} (+ {})\n", opt_.fields, xdmfSidecarPath(opt_.fields));
     }
     return kExitSuccess;
+  }
+
+  FieldsAnalysis analyseLiveFields(const RunSummaryInput& in) const {
+    PeriodResult period;
+    int discarded = 0;
+    const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
+    FieldsAnalysis a = analyseFields(*averager_, fieldsContext(scene_, "live: " + opt_.scene_path,
+                                                               sceneToToml(scene_), layer_period));
+    a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.particles.diameter,
+                                  scene_.container.periodic_x);
+    return a;
   }
 
   const SimulateOptions& opt_;
@@ -295,7 +325,7 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
   CLI::App* cmd = app.add_subcommand("simulate", "Run the event-driven particle engine on a scene");
   cmd->add_option("scene", opt.scene_path, "Scene file (TOML, SI units; see docs/scenes.md)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Output run file (H5MD); default <scene>.h5");
   cmd->add_option("--set", opt.overrides, "Override a scene key: section.key=value")
       ->take_all()
@@ -311,7 +341,8 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Save a checkpoint every this many seconds of wall time (and on Ctrl-C); "
                   "the same command then continues a killed run from it")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::PositiveNumber)
+      ->check(finiteNumber());
 }
 
 int runSimulate(const SimulateOptions& opt, const std::string& command_line) {

@@ -9,7 +9,9 @@
 #include <set>
 #include <thread>
 
+#include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
+#include "studies/cli/OptionChecks.hpp"
 #include "studies/cli/StudyKinds.hpp"
 #include "studies/cli/Version.hpp"
 #include "studies/framework/InstalledFiles.hpp"
@@ -118,7 +120,7 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
       "study", "Run a study (particles, fields, hydro, analysis) and write its report");
   cmd->add_option("study", opt.study_path, "Study file (TOML; docs/studies.md)")
       ->required()
-      ->check(CLI::ExistingFile);
+      ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output,
                   "Output directory (results.h5, report.html, runs/); default: the study "
                   "file's stem");
@@ -131,6 +133,7 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
                   "Seconds of wall time between checkpoints of a particle run, from which a "
                   "killed study continues it (0 = none)")
       ->check(CLI::NonNegativeNumber)
+      ->check(finiteNumber())
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress lines");
   cmd->add_flag("--no-report", opt.no_report, "Write results.h5 only, no report.html");
@@ -140,6 +143,7 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   StudyFile file = StudyFile::load(opt.study_path);
   const std::unique_ptr<Study> study = makeStudy(file);
   const int file_jobs = file.integer("study", "jobs", 0);
+  if (file_jobs < 0) file.fail("study", "jobs", "expected 0 (one per core) or more runs at a time");
   file.rejectUnknownKeys();
   const int jobs = jobsOf(opt, file_jobs, mpi);
   const std::vector<RunRequest> plan = study->plan();
@@ -147,6 +151,10 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   std::string outdir = opt.output;
   if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
   std::filesystem::create_directories(outdir);
+  const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
+  const std::string html = (std::filesystem::path(outdir) / "report.html").string();
+  files::requireDistinct({{"study file", opt.study_path}},
+                         {{"results file", results}, {"report", html}});
   const std::string cache_dir =
       opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
   const std::string build_id = buildIdentity();
@@ -165,8 +173,6 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   };
   const RunSet runs(runAll(plan, cache, scheduling, mpi.size() > 1 ? &remote : nullptr));
   requireFinished(runs, cache_dir);
-  const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
-  const std::string html = (std::filesystem::path(outdir) / "report.html").string();
   writeResults(results, *study, file, runs, build_id);
   if (!opt.no_report)
     renderReport(results, html, (std::filesystem::path(outdir) / "report.log").string());

@@ -4,8 +4,11 @@
 
 #include <CLI/CLI.hpp>
 #include <exception>
+#include <new>
 #include <string>
 
+#include "files/OutputPath.hpp"
+#include "h5/ErrorStack.hpp"
 #include "hydro/HydroSimulation.hpp"
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
@@ -23,7 +26,28 @@
 #include "studies/runner/RemoteWorkers.hpp"
 #include "studies/runner/RunScheduler.hpp"
 
+namespace {
+
+// Error messages quote what the user gave (keys, paths, values); a control character among
+// them must not break the one-line contract (or move the cursor): it is printed escaped.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  for (const unsigned char c : text) {
+    if (c < 0x20 || c == 0x7f) {
+      out += c == '\n' ? std::string("\\n") : fmt::format("\\x{:02x}", c);
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
+}
+
+void printError(const std::string& what) { fmt::print(stderr, "granwave: {}\n", oneLine(what)); }
+
+}  // namespace
+
 int main(int argc, char** argv) {
+  granwave::h5::skipLibraryShutdownAtExit();  // h5/ErrorStack.hpp says why
   // Before anything else: MPI may rewrite argc/argv. A no-op outside mpirun.
   granwave::MpiSession mpi(argc, argv);
   CLI::App app{
@@ -45,7 +69,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     // One line and the documented code for a bad command line (CLI11's own codes are 100+).
-    fmt::print(stderr, "granwave: {} (see granwave --help)\n", e.what());
+    printError(std::string(e.what()) + " (see granwave --help)");
     return granwave::kExitInvalidInput;
   }
 
@@ -63,28 +87,35 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
     if (app.got_subcommand("export")) return granwave::runExport(exported);
   } catch (const granwave::StudyInterrupted& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return stop(granwave::kExitInterrupted);
   } catch (const granwave::StudyError& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return stop(granwave::kExitInvalidInput);
+  } catch (const granwave::files::PathError& e) {
+    printError(e.what());
+    return stop(granwave::kExitInvalidInput);
+  } catch (const std::bad_alloc&) {
+    // Not a file error (74): the scene asks for more memory than this machine gives.
+    printError("out of memory (a smaller scene, fewer jobs, or a machine with more memory)");
+    return stop(granwave::kExitOutOfMemory);
   } catch (const granwave::SceneError& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return granwave::kExitInvalidInput;
   } catch (const granwave::hydro::HydroFailure& e) {
-    fmt::print(stderr, "granwave: hydrodynamic solver: {}\n", e.what());
+    printError(std::string("hydrodynamic solver: ") + e.what());
     return granwave::kExitSolverFailure;
   } catch (const granwave::InelasticCollapse& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return granwave::kExitEngineBreakdown;
   } catch (const granwave::EventLoopStall& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return granwave::kExitEngineBreakdown;
   } catch (const granwave::CheckpointError& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return stop(granwave::kExitCheckpointError);
   } catch (const std::exception& e) {
-    fmt::print(stderr, "granwave: {}\n", e.what());
+    printError(e.what());
     return stop(granwave::isOutsideFailure(e) ? granwave::kExitFileError : granwave::kExitError);
   }
   return 0;

@@ -12,6 +12,7 @@ enum ExitCode : int {
   kExitInvalidInput = 2,      // scene, study file or command line
   kExitEngineBreakdown = 3,   // inelastic collapse or a stalled event loop
   kExitSolverFailure = 4,     // CVODE failed
+  kExitOutOfMemory = 71,      // std::bad_alloc (sysexits EX_OSERR: the machine, not the input)
   kExitFileError = 74,        // HDF5 or file system (sysexits EX_IOERR)
   kExitCheckpointError = 75,  // checkpoint cannot be taken or used (sysexits EX_TEMPFAIL)
   kExitInterrupted = 130,

@@ -1,5 +1,7 @@
 #include "studies/runner/RemoteWorkers.hpp"
 
+#include <fmt/format.h>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +19,7 @@ namespace granwave {
 namespace {
 
 [[maybe_unused]] constexpr int kTagWork = 1, kTagDone = 2;
+[[maybe_unused]] constexpr unsigned long long kStop = ~0ull;  // the work message's "leave"
 
 bool launchedByMpirun() {
   return std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMIX_RANK") || std::getenv("PMI_RANK");
@@ -51,10 +54,10 @@ RemoteWorkers::RemoteWorkers(const MpiSession& mpi) : mpi_(&mpi) {
   for (int r = 1; r < mpi.size(); ++r) idle_.push_back(r);
 }
 
-void RemoteWorkers::dispatch(std::size_t index) {
+void RemoteWorkers::dispatch(std::size_t index, std::uint64_t attempt) {
   if (idle_.empty()) throw std::logic_error("no idle worker rank");
-  const long long i = static_cast<long long>(index);
-  MPI_Send(&i, 1, MPI_LONG_LONG, idle_.back(), kTagWork, MPI_COMM_WORLD);
+  const unsigned long long work[2] = {index, attempt};
+  MPI_Send(work, 2, MPI_UNSIGNED_LONG_LONG, idle_.back(), kTagWork, MPI_COMM_WORLD);
   idle_.pop_back();
   ++busy_;
 }
@@ -77,8 +80,8 @@ bool RemoteWorkers::poll(std::size_t& index, ChildOutcome& outcome) {
 }
 
 void RemoteWorkers::stopAll() {
-  const long long stop = -1;
-  for (int r : idle_) MPI_Send(&stop, 1, MPI_LONG_LONG, r, kTagWork, MPI_COMM_WORLD);
+  const unsigned long long stop[2] = {kStop, 0};
+  for (int r : idle_) MPI_Send(stop, 2, MPI_UNSIGNED_LONG_LONG, r, kTagWork, MPI_COMM_WORLD);
   idle_.clear();
 }
 
@@ -86,14 +89,15 @@ void workerLoop(const MpiSession&, const std::vector<RunRecord>& records,
                 const std::function<std::vector<std::string>(const RunRecord&)>& arguments) {
   const std::string exe = selfExecutable();
   for (;;) {
-    long long i = -1;
-    MPI_Recv(&i, 1, MPI_LONG_LONG, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
-    if (i < 0) return;
+    unsigned long long work[2] = {kStop, 0};
+    MPI_Recv(work, 2, MPI_UNSIGNED_LONG_LONG, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    if (work[0] == kStop) return;
+    const std::size_t i = work[0];
     ChildOutcome out;
     out.exit_code = 127;  // reported if the run cannot even be started
     try {
-      const RunRecord& r = records.at(static_cast<std::size_t>(i));
-      std::filesystem::remove(r.logPath());
+      RunRecord r = records.at(i);
+      r.attempt = fmt::format("{:016x}", work[1]);
       ChildProcess child(r.request.kind == RunKind::Lammps ? r.request.program : exe, arguments(r),
                          r.logPath());
       while (!child.poll(out)) std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -121,7 +125,9 @@ MpiSession::MpiSession(int& argc, char**& argv) {
 MpiSession::~MpiSession() = default;
 void MpiSession::abort(int code) const { std::exit(code); }
 RemoteWorkers::RemoteWorkers(const MpiSession& mpi) : mpi_(&mpi) {}
-void RemoteWorkers::dispatch(std::size_t) { throw std::logic_error("no worker ranks"); }
+void RemoteWorkers::dispatch(std::size_t, std::uint64_t) {
+  throw std::logic_error("no worker ranks");
+}
 bool RemoteWorkers::poll(std::size_t&, ChildOutcome&) { return false; }
 void RemoteWorkers::stopAll() {}
 void workerLoop(const MpiSession&, const std::vector<RunRecord>&,

@@ -7,6 +7,7 @@
 // writes records, results.h5 and the report. Without MPI (or outside mpirun) there is one rank
 // and the same study uses local child processes only.
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -40,7 +41,8 @@ class RemoteWorkers {
   explicit RemoteWorkers(const MpiSession& mpi);
   int idle() const { return static_cast<int>(idle_.size()); }
   int busy() const { return busy_; }
-  void dispatch(std::size_t index);
+  // Hands run `index` to an idle rank; its log is named for `attempt` (RunRecord::attempt).
+  void dispatch(std::size_t index, std::uint64_t attempt);
   // A finished remote run, if any (non-blocking).
   bool poll(std::size_t& index, ChildOutcome& outcome);
   void stopAll();  // every worker leaves its loop (all must be idle)

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "files/OutputPath.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/runner/ChildProcess.hpp"
 
@@ -80,7 +81,9 @@ void RunCache::store(const RunRecord& r) const {
   toml::table t{{"label", r.request.label}, {"ok", r.ok},
                 {"exit_code", r.exit_code}, {"message", r.message},
                 {"wall_seconds", r.wall},   {"cpu_seconds", r.cpu}};
-  const std::string tmp = r.recordPath() + ".tmp";
+  // A temporary of this process beside the record (studies sharing the cache never share it),
+  // renamed over the record: a reader sees the whole record or none.
+  const std::string tmp = files::temporaryFor(r.recordPath());
   {
     std::ofstream out(tmp);
     out << t << "\n";

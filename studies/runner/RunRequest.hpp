@@ -53,7 +53,12 @@ struct RunRecord {
   std::string fieldsPath() const { return stem + ".fields.h5"; }
   std::string hydroPath() const { return stem + ".hydro.h5"; }
   std::string lammpsPath() const { return stem + ".com.txt"; }
-  std::string logPath() const { return stem + ".log"; }
+  // The log of one attempt at the run (stdout and stderr of its process): named per attempt,
+  // so that no other study sharing the cache removes or rewrites it while it is read.
+  std::string attempt;
+  std::string logPath() const {
+    return attempt.empty() ? stem + ".log" : stem + "." + attempt + ".log";
+  }
   std::string recordPath() const { return stem + ".done"; }
 };
 

@@ -11,15 +11,19 @@
 #include <fstream>
 #include <list>
 #include <map>
+#include <random>
+#include <set>
 #include <system_error>
 #include <thread>
 
+#include "files/OutputPath.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/runner/ChildProcess.hpp"
 #include "studies/runner/ExitCode.hpp"
 #include "studies/runner/InterruptFlag.hpp"
 #include "studies/runner/OrphanedTemporaries.hpp"
 #include "studies/runner/RemoteWorkers.hpp"
+#include "studies/runner/RunClaim.hpp"
 
 namespace granwave {
 
@@ -68,7 +72,7 @@ std::string failureReason(const std::string& path) {
 // Atomically and checked: a child reading a truncated scene would run the default scene and
 // its result would be cached under this one's name.
 void writeScene(const RunRecord& r) {
-  const std::string tmp = r.scenePath() + ".tmp-" + std::to_string(::getpid());
+  const std::string tmp = files::temporaryFor(r.scenePath());
   {
     std::ofstream scene(tmp, std::ios::trunc);
     scene << sceneToToml(r.request.scene);
@@ -88,6 +92,14 @@ std::string unfinishedReason(const RunRecord& r, int exit_code) {
   if (exit_code == kExitFileError || exit_code == kExitCheckpointError)
     return failureReason(r.logPath()) + " (not cached)";
   return fmt::format("did not finish: exit code {} (not cached)", exit_code);
+}
+
+// A name for one attempt at a run, unique across the processes (and machines) sharing a
+// cache: its log is <stem>.<attempt>.log.
+std::uint64_t newAttempt() {
+  static std::mt19937_64 draw{(static_cast<std::uint64_t>(std::random_device{}()) << 32) ^
+                              std::random_device{}()};
+  return draw();
 }
 
 struct Running {
@@ -115,8 +127,10 @@ class Schedule {
   std::vector<RunRecord> run() {
     announce();
     const auto& interrupt = installInterruptFlag();
-    while (!pending_.empty() || !running_.empty() || (remote_ && remote_->busy() > 0)) {
+    while (!pending_.empty() || !waiting_.empty() || !running_.empty() ||
+           (remote_ && remote_->busy() > 0)) {
       if (interrupt.load()) stopOnInterrupt();
+      retryWaiting();
       launch();
       if (!reap()) std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -135,24 +149,62 @@ class Schedule {
                  workers ? fmt::format(" here, 1 on each of {} more ranks", workers) : "");
   }
 
-  // The run's scene, no leftovers of an earlier attempt, and what it had spent before.
-  std::size_t start() {
-    const std::size_t i = pending_.front();
-    pending_.pop_front();
-    RunRecord& r = records_[i];
-    writeScene(r);
-    std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
-    removeOrphanedTemporaries(r.stem);  // of any kind of run killed in an earlier study
-    if (opt_.checkpoint_every > 0 && opt_.earlier_cost) earlier_cost_[i] = opt_.earlier_cost(r);
-    return i;
+  // The next pending run this study may make: its claim taken (RunClaim.hpp), its scene
+  // written, no leftovers of an earlier attempt, and what it had spent before. A run another
+  // study is making waits; one it made meanwhile is taken from the cache.
+  bool claimNext(std::size_t& i) {
+    while (!pending_.empty()) {
+      i = pending_.front();
+      pending_.pop_front();
+      RunRecord& r = records_[i];
+      RunClaim claim(r.stem);
+      if (!claim.held()) {
+        wait(i);
+        continue;
+      }
+      if (cache_.load(r)) {
+        reportReused(r);
+        continue;
+      }
+      claims_[i] = std::move(claim);
+      r.attempt = fmt::format("{:016x}", attempt_[i] = newAttempt());
+      writeScene(r);
+      std::filesystem::remove(r.runPath() + ".interrupted");  // left by an earlier interrupt
+      removeOrphanedTemporaries(r.stem);  // of any kind of run killed in an earlier study
+      if (opt_.checkpoint_every > 0 && opt_.earlier_cost) earlier_cost_[i] = opt_.earlier_cost(r);
+      return true;
+    }
+    return false;
+  }
+
+  void wait(std::size_t i) {
+    if (!opt_.quiet && announced_waiting_.insert(i).second)
+      fmt::print(stderr, "granwave study: {} is being made by another study; waiting for it\n",
+                 records_[i].request.label);
+    waiting_.push_back(i);
+  }
+
+  // Every half second the runs other studies held are tried again.
+  void retryWaiting() {
+    const auto now = std::chrono::steady_clock::now();
+    if (waiting_.empty() || now < next_retry_) return;
+    next_retry_ = now + std::chrono::milliseconds(500);
+    pending_.insert(pending_.end(), waiting_.begin(), waiting_.end());
+    waiting_.clear();
+  }
+
+  void reportReused(const RunRecord& r) {
+    ++done_;
+    if (!opt_.quiet)
+      fmt::print(stderr, "granwave study: [{:>3}/{}] {:<44} made by another study{}\n", done_,
+                 total_, r.request.label, r.ok ? "" : "  " + r.message);
   }
 
   void launch() {
-    while (!pending_.empty() && remote_ && remote_->idle() > 0) remote_->dispatch(start());
-    while (!pending_.empty() && static_cast<int>(running_.size()) < opt_.jobs) {
-      const std::size_t i = start();
+    std::size_t i = 0;
+    while (remote_ && remote_->idle() > 0 && claimNext(i)) remote_->dispatch(i, attempt_[i]);
+    while (static_cast<int>(running_.size()) < opt_.jobs && claimNext(i)) {
       RunRecord& r = records_[i];
-      std::filesystem::remove(r.logPath());
       const std::string& program = r.request.kind == RunKind::Lammps ? r.request.program : exe_;
       running_.push_back(
           {i, ChildProcess(program, childArguments(r, opt_.checkpoint_every), r.logPath())});
@@ -191,6 +243,8 @@ class Schedule {
       out.cpu += earlier->second.second;
     }
     r.exit_code = out.exit_code;
+    const RunClaim claim = std::move(claims_[i]);  // released once the record is stored
+    claims_.erase(i);
     if (!isRunOutcome(out.exit_code)) {
       r.ok = false;
       r.message = unfinishedReason(r, out.exit_code);
@@ -244,6 +298,12 @@ class Schedule {
   std::vector<RunRecord> records_;
   std::map<std::string, std::size_t> first_of_stem_;
   std::deque<std::size_t> pending_;
+  // Runs another study sharing the cache holds the claim of, tried again now and then.
+  std::deque<std::size_t> waiting_;
+  std::set<std::size_t> announced_waiting_;
+  std::chrono::steady_clock::time_point next_retry_;
+  std::map<std::size_t, RunClaim> claims_;
+  std::map<std::size_t, std::uint64_t> attempt_;
   std::list<Running> running_;  // list: children are not move-assignable
   std::map<std::size_t, std::pair<double, double>> earlier_cost_;
   std::size_t total_ = 0, done_ = 0;

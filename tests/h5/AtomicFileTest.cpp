@@ -111,6 +111,20 @@ TEST(AtomicFile, ErrorsNameTheTargetNotTheTemporary) {
   }
 }
 
+TEST(AtomicFile, DeviceOrDirectoryTargetIsRefusedAndStaysAsItWas) {
+  testing::ScratchDir dir;
+  for (const std::string& target : {std::string("/dev/null"), dir.path().string()}) {
+    try {
+      AtomicFile atomic(target);
+      FAIL() << "no H5Error for " << target;
+    } catch (const H5Error& error) {
+      EXPECT_THAT(error.what(), HasSubstr(target + ": is a"));
+    }
+  }
+  EXPECT_TRUE(std::filesystem::is_character_file("/dev/null"));
+  EXPECT_TRUE(dir.empty());
+}
+
 TEST(AtomicFile, MissingDirectoryIsAnErrorAndLeavesNothing) {
   testing::ScratchDir dir;
   const std::string target = dir.file("absent/RUN.h5");
@@ -118,7 +132,7 @@ TEST(AtomicFile, MissingDirectoryIsAnErrorAndLeavesNothing) {
     AtomicFile atomic(target);
     FAIL() << "no H5Error";
   } catch (const H5Error& error) {
-    EXPECT_THAT(error.what(), HasSubstr(target + ": cannot create file"));
+    EXPECT_THAT(error.what(), HasSubstr(target + ": its directory"));
     EXPECT_THAT(error.what(), Not(HasSubstr("\n")));
   }
   EXPECT_TRUE(dir.empty());

@@ -20,8 +20,8 @@ TEST(ExitCode, RunOutcomesAreSuccessAndTheDeterministicFailuresOnly) {
   for (int code :
        {kExitSuccess, kExitError, kExitInvalidInput, kExitEngineBreakdown, kExitSolverFailure})
     EXPECT_TRUE(isRunOutcome(code)) << code;
-  for (int code :
-       {int{kExitFileError}, int{kExitCheckpointError}, int{kExitInterrupted}, 128 + 9, -1})
+  for (int code : {int{kExitOutOfMemory}, int{kExitFileError}, int{kExitCheckpointError},
+                   int{kExitInterrupted}, 128 + 9, -1})
     EXPECT_FALSE(isRunOutcome(code)) << code;
 }
 

@@ -31,7 +31,7 @@ class ExportCli : public ::testing::Test {
     dir_ = fs::temp_directory_path() / ("granwave_export_" + std::to_string(::getpid()));
     fs::remove_all(dir_);
     fs::create_directories(dir_);
-    std::ofstream(dir_ / "dry.toml") << "[run]\nduration = 0.3\n";
+    std::ofstream(dir_ / "dry.toml") << "[contact]\nrestitution = \"dry\"\n[run]\nduration = 0.3\n";
     ASSERT_EQ(std::system(("cd '" + dir_.string() +
                            "' && '" GRANWAVE_BINARY "' simulate -q dry.toml -o run.h5 > /dev/null")
                               .c_str()),

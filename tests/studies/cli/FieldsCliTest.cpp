@@ -99,7 +99,8 @@ TEST_F(FieldsCli, TruncatedRunIsRejected) {
 }
 
 TEST_F(FieldsCli, StridedRunIsRejectedWithTheRemedy) {
-  std::ofstream(dir_ / "strided.toml") << "[run]\nduration = 0.5\ntrajectory_stride = 2\n";
+  std::ofstream(dir_ / "strided.toml")
+      << "[contact]\nrestitution = \"dry\"\n[run]\nduration = 0.5\ntrajectory_stride = 2\n";
   ASSERT_EQ(run("simulate -q strided.toml -o strided.h5").code, 0);
   expectCleanFailure(run("fields strided.h5 -o f.h5"), "trajectory_stride");
 }

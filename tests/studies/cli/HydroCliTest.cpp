@@ -34,7 +34,7 @@ class HydroCli : public ::testing::Test {
     return ss.str();
   }
   Result run(const std::string& scene_text, const std::string& args) {
-    std::ofstream(dir_ / "s.toml") << scene_text;
+    std::ofstream(dir_ / "s.toml") << "[contact]\nrestitution = \"dry\"\n" << scene_text;
     const std::string cmd = "cd '" + dir_.string() + "' && '" GRANWAVE_BINARY "' hydro -q s.toml " +
                             args + " > out.txt 2> err.txt";
     const int st = std::system(cmd.c_str());

@@ -66,7 +66,7 @@ class SimulateCli : public ::testing::Test {
   fs::path dir_;
 };
 
-const char* kShort = "[run]\nduration = 0.3\n";
+const char* kShort = "[contact]\nrestitution = \"dry\"\n[run]\nduration = 0.3\n";
 // A cold, dense, undriven gas with the TC model off: inelastic collapse within about 1 s.
 const char* kCollapse =
     "[particles]\ncount = 400\n[container]\nwidth = 0.0627\nheight = 0.0627\n"
@@ -90,7 +90,7 @@ TEST_F(SimulateCli, WritesRunFileAndSummary) {
 
 TEST_F(SimulateCli, SameSceneAndSeedGiveIdenticalFiles) {
   const std::string scene =
-      write("short.toml", std::string(kShort) + "[contact]\nrestitution = \"wet\"\n");
+      write("short.toml", "[contact]\nrestitution = \"wet\"\n[run]\nduration = 0.3\n");
   ASSERT_EQ(run("simulate -q " + scene + " -o a.h5").code, 0);
   ASSERT_EQ(run("simulate -q " + scene + " -o b.h5").code, 0);
   // The command line (output name) is stored as provenance: compare trajectories instead
@@ -173,7 +173,8 @@ TEST_F(SimulateCli, CollapseWithoutTCIsReportedAndWritesNothing) {
 }
 
 TEST_F(SimulateCli, InterruptSavesPartialRunUnderInterruptedName) {
-  const std::string scene = write("long.toml", "[run]\nduration = 600\n");
+  const std::string scene =
+      write("long.toml", "[contact]\nrestitution = \"dry\"\n[run]\nduration = 600\n");
   const Result r =
       run("simulate -q " + scene + " -o run.h5", "timeout --preserve-status -s INT 1.5");
   EXPECT_EQ(r.code, 130) << r.err;
@@ -220,7 +221,8 @@ TEST_F(SimulateCli, CheckpointLockHeldByAnotherProcessExits75AndWritesNothing) {
 }
 
 TEST_F(SimulateCli, CheckpointThatCannotBeWrittenExits75) {
-  const std::string scene = write("run.toml", "[run]\nduration = 3\n");
+  const std::string scene =
+      write("run.toml", "[contact]\nrestitution = \"dry\"\n[run]\nduration = 3\n");
   fs::create_directories(dir_ / "run.h5.checkpoint-1.h5md" / "in-the-way");
   const Result r = run("simulate -q " + scene + " -o run.h5 --checkpoint-every 0.05");
   EXPECT_EQ(r.code, 75) << r.err;

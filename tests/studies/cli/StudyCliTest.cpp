@@ -180,6 +180,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadStudy{"SceneOverrideRejected", tinyWith("set", "set = [\"drive.gama=4\"]"),
                  "drive.gama"},
         BadStudy{"MalformedToml", tinyWith("[sweep]", "[sweep"), "TOML syntax error"},
+        BadStudy{"NegativeJobs", tinyWith("kind", "kind = \"wave-fronts\"\njobs = -3"),
+                 "[study] jobs"},
         BadStudy{"StabilityRepeatedSeed", tinyStabilityWith("seeds", "seeds = [1, 1]"),
                  "[particles] seeds"},
         BadStudy{"StabilitySingleSeedKeyIsUnknown", tinyStabilityWith("seeds", "seed = 1"),

@@ -1,0 +1,184 @@
+// What every command guarantees about the files it is given (docs/commands.md, "Files: what
+// every command guarantees"): devices, FIFOs and directories are refused as outputs and
+// inputs before any work; no output may be an input or another output (the XDMF sidecar
+// included); errors stay one line; NaN options, unnamed restitution laws and empty or
+// truncated scenes are refused; running out of memory has its own exit code.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/sysmacros.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int code;
+  std::string out, err;
+};
+
+const char* kShortDry = "[contact]\nrestitution = \"dry\"\n[run]\nduration = 0.3\n";
+
+class FileSafetyCli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("granwave_files_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    write("s.toml", kShortDry);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  void write(const std::string& name, const std::string& text) {
+    std::ofstream(dir_ / name) << text;
+  }
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  }
+  // `timeout` turns a command that would block (a FIFO input) into a failure, not a hang.
+  Result run(const std::string& args, const std::string& prefix = "") {
+    const std::string cmd = "cd '" + dir_.string() + "' && " + prefix + " timeout 60 '" +
+                            GRANWAVE_BINARY + "' " + args + " > out.txt 2> err.txt";
+    const int status = std::system(cmd.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"),
+            slurp(dir_ / "err.txt")};
+  }
+  // Exit 2 (or `code`), one line naming `mention`, nothing on stdout.
+  static void expectRefusal(const Result& r, const std::string& mention, int code = 2) {
+    EXPECT_EQ(r.code, code) << r.err;
+    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.out, "");
+  }
+  // Files the command left besides the test's own (scenes, out.txt, err.txt, `keep`).
+  int stray(const std::string& keep = "") const {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(dir_)) {
+      const std::string f = e.path().filename().string();
+      n += !(f == "out.txt" || f == "err.txt" || f.ends_with(".toml") || f == keep);
+    }
+    return n;
+  }
+  bool makeRunFile() { return run("simulate -q s.toml -o run.h5").code == 0; }
+  fs::path dir_;
+};
+
+}  // namespace
+
+TEST_F(FileSafetyCli, DeviceOutputIsRefusedAndStaysADevice) {
+  for (const std::string command : {"simulate -q s.toml", "hydro -q s.toml"}) {
+    expectRefusal(run(command + " -o /dev/full"), "/dev/full: is a character device");
+    EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  }
+  if (::geteuid() != 0) GTEST_SKIP() << "a private device node needs root (mknod)";
+  // A private copy of /dev/null: as root, renaming over it would have replaced it.
+  ASSERT_EQ(::mknod((dir_ / "mynull").c_str(), S_IFCHR | 0666, makedev(1, 3)), 0);
+  expectRefusal(run("simulate -q s.toml -o mynull"), "mynull: is a character device");
+  EXPECT_TRUE(fs::is_character_file(dir_ / "mynull"));
+}
+
+TEST_F(FileSafetyCli, DirectoryOutputIsRefusedBeforeAnyWorkAndNothingGoesIntoIt) {
+  for (const std::string out : {"/", ".", "sub/"}) {
+    expectRefusal(run("simulate -q s.toml -o " + out), "directory");
+    EXPECT_EQ(stray(), 0) << out;
+  }
+  expectRefusal(run("simulate -q s.toml -o nosuch/run.h5"), "nosuch does not exist");
+}
+
+TEST_F(FileSafetyCli, OutputOverTheSceneOrAnotherOutputIsRefusedBeforeTheRun) {
+  expectRefusal(run("simulate -q s.toml -o s.toml"), "would overwrite the scene");
+  EXPECT_EQ(slurp(dir_ / "s.toml"), kShortDry);
+  expectRefusal(run("simulate -q s.toml -o r.h5 --fields r.h5"), "would be the same file");
+  expectRefusal(run("simulate -q s.toml -o r.h5 --fields ./r.h5"), "would be the same file");
+  expectRefusal(run("simulate -q s.toml -o r.h5 --fields f.xdmf"), "fields sidecar");
+  expectRefusal(run("simulate -q s.toml -o f.xdmf --fields f.h5"), "fields sidecar");
+  expectRefusal(run("hydro -q s.toml -o s.toml"), "would overwrite the scene");
+  EXPECT_EQ(stray(), 0);
+}
+
+TEST_F(FileSafetyCli, FieldsAndExportRefuseToOverwriteTheirRunFile) {
+  ASSERT_TRUE(makeRunFile());
+  const std::string before = slurp(dir_ / "run.h5");
+  expectRefusal(run("fields run.h5 -o run.h5"), "would overwrite the run file");
+  expectRefusal(run("fields run.h5 -o run.xdmf"), "would be the same file");
+  expectRefusal(run("fields run.h5 -o /dev/full"), "/dev/full: is a character device");
+  expectRefusal(run("export run.h5 -o /dev/full"), "/dev/full: is a character device");
+  fs::create_hard_link(dir_ / "run.h5", dir_ / "link.h5");
+  expectRefusal(run("fields run.h5 -o link.h5"), "would overwrite the run file");
+  expectRefusal(run("export run.h5 -o link.h5"), "would overwrite the run file");
+  EXPECT_EQ(slurp(dir_ / "run.h5"), before);
+}
+
+TEST_F(FileSafetyCli, FailedFieldsStepLeavesNeitherTheFieldsNorTheRunFile) {
+  // 0.3 s (3 cycles) holds no steady cycle to average: the fields analysis fails at the end.
+  const Result r = run("simulate -q s.toml -o r.h5 --fields f.h5");
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("no steady cycles"), std::string::npos) << r.err;
+  EXPECT_EQ(stray(), 0) << "the run file of a failed --fields run was left";
+}
+
+TEST_F(FileSafetyCli, FifoAndDeviceInputsAreRefusedWithoutBlocking) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  for (const std::string command : {"simulate -q", "hydro -q", "fields", "export", "study -q"})
+    expectRefusal(run(command + " pipe"), "is a FIFO");
+  expectRefusal(run("fields /dev/zero"), "is a character device");
+}
+
+TEST_F(FileSafetyCli, NanOptionsAreRefused) {
+  expectRefusal(run("simulate -q s.toml --checkpoint-every nan"), "not a finite number");
+  expectRefusal(run("study -q s.toml --checkpoint-every nan"), "not a finite number");
+  ASSERT_TRUE(makeRunFile());
+  expectRefusal(run("fields run.h5 --front-threshold nan"), "not a finite number");
+}
+
+TEST_F(FileSafetyCli, ControlCharactersInAnErrorAreEscapedToKeepItOneLine) {
+  // A key with a newline and an escape sequence in it, as a careless script might pass.
+  const Result bad = run("simulate -q s.toml --set \"$(printf 'drive.gam\\nma\\033[2J=4')\"");
+  EXPECT_EQ(bad.code, 2) << bad.err;
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_NE(bad.err.find("gam\\nma\\x1b[2J"), std::string::npos) << bad.err;
+}
+
+TEST_F(FileSafetyCli, EmptyOrTruncatedSceneIsRefusedNotRunAsTheDryScene) {
+  write("empty.toml", "");
+  expectRefusal(run("simulate -q empty.toml"), "empty.toml: is empty and names no restitution law");
+  // paper-wet.toml cut before its [contact] section would have run the dry scene.
+  std::ifstream wet(GRANWAVE_SOURCE_DIR "/scenes/paper-wet.toml");
+  std::string text, line;
+  while (std::getline(wet, line) && line != "[contact]") text += line + "\n";
+  write("cut.toml", text);
+  expectRefusal(run("simulate -q cut.toml"), "cut.toml: names no restitution law");
+  expectRefusal(run("hydro -q cut.toml"), "names no restitution law");
+  EXPECT_EQ(stray(), 0);
+  // Named on the command line instead, the same file runs.
+  EXPECT_EQ(run("simulate -q cut.toml --no-output --set run.duration=0.1 --set "
+                "contact.restitution=wet")
+                .code,
+            0);
+}
+
+TEST_F(FileSafetyCli, OutOfMemoryHasItsOwnExitCodeAndMessage) {
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "AddressSanitizer needs more address space than the limit below leaves";
+#endif
+  // 600 MB of address space is too little for four million grains (their state, event queue
+  // and cell lists); the allocation fails as it would on a small machine.
+  const Result r =
+      run("simulate -q s.toml --no-output --set particles.count=4000000 --set "
+          "container.width=40 --set container.height=40",
+          "ulimit -v 600000;");
+  expectRefusal(r, "out of memory", 71);
+}
