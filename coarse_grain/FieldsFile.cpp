@@ -200,6 +200,16 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
                                pr.state.mean_relative_displacement_d);
       f.writeAttribute<double>(g, "bonds_kept", pr.state.bonds_kept);
       f.writeAttribute<double>(g, "bonds_kept_per_cycle", pr.state.bonds_kept_per_cycle);
+      const WithinCycleResult& w = pr.within_cycle;
+      f.writeStringAttribute(g, "within_cycle_state", std::string(toString(w.state)));
+      f.writeAttribute<double>(g, "within_cycle_crystal_share", w.crystal_share);
+      f.writeAttribute<double>(g, "within_cycle_amorphous_share", w.amorphous_share);
+      f.writeAttribute<double>(g, "within_cycle_liquid_share", w.liquid_share);
+      f.writeAttribute<double>(g, "within_cycle_coordination", w.coordination);
+      f.writeAttribute<double>(g, "within_cycle_psi6", w.psi6);
+      f.writeAttribute<double>(g, "within_cycle_compact_phase", w.compact_phase);
+      f.writeAttribute<double>(g, "lid_row", w.lid_row);
+      f.writeAttribute<double>(g, "lid_row_cycles", w.lid_row_cycles);
     }
   }
 

@@ -93,8 +93,8 @@ int runFields(const FieldsOptions& opt) {
   fronts.threshold = opt.front_threshold;
   FieldsAnalysis a = analyseFields(
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
-  a.patterns = classifyPatterns(patterns, scene.container.width, scene.particles.diameter,
-                                scene.container.periodic_x);
+  a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
+                                scene.particles.diameter, scene.container.periodic_x);
   std::string out = opt.output;
   if (out.empty())
     out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();

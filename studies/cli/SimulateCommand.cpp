@@ -255,8 +255,8 @@ class SimulationRun {
       FieldsAnalysis a = analyseFields(
           *averager_,
           fieldsContext(scene_, "live: " + opt_.scene_path, sceneToToml(scene_), layer_period));
-      a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.particles.diameter,
-                                    scene_.container.periodic_x);
+      a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
+                                    scene_.particles.diameter, scene_.container.periodic_x);
       writeFieldsFile(opt_.fields, a);
       fmt::print("{}", formatFieldsSummary(a));
       fmt::print("fields output   {} (+ {})\n", opt_.fields, xdmfSidecarPath(opt_.fields));

@@ -39,6 +39,7 @@ struct StabilityResults {
   StabilityGrid grid;
   std::vector<HydroPoint> hydro[2];                            // [law][i_f * gammas + j_gamma]
   std::vector<double> symbol_differences, period_differences;  // per frequency
+  std::vector<double> symbol_differences_within_cycle;         // state by the second criterion
   std::vector<FeatureCheck> features;
   std::vector<GallerySnapshot> gallery;  // by state, then law, f, Gamma
 };
