@@ -213,6 +213,20 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
     }
   }
 
+  const PeriodDoublingSeries& pd = a.context.period_doubling;
+  if (!pd.f2_strength.empty()) {
+    const std::string g = "/period_doubling";
+    f.createGroup(g);
+    f.writeDataset(g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()});
+    f.writeAttribute<std::int64_t>(g, "window_cycles", pd.window_cycles);
+    f.writeAttribute<std::int64_t>(g, "first_cycle", pd.first_cycle);
+    f.writeAttribute<double>(g, "period2_share", pd.period2_share);
+    f.writeAttribute<double>(g, "share_low", pd.share_low);
+    f.writeAttribute<double>(g, "share_high", pd.share_high);
+    f.writeAttribute<double>(g, "effective_windows", pd.effective_windows);
+    f.writeAttribute<std::int64_t>(g, "switches", pd.switches);
+  }
+
   f.createGroup("/parameters");
   const std::string par = "/parameters";
   f.writeStringAttribute(par, "format", kFieldsFormat);

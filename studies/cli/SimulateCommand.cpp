@@ -255,6 +255,7 @@ class SimulationRun {
       FieldsAnalysis a = analyseFields(
           *averager_,
           fieldsContext(scene_, "live: " + opt_.scene_path, sceneToToml(scene_), layer_period));
+      summarisePeriodDoubling(in, a.context.period_doubling);
       a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
                                     scene_.particles.diameter, scene_.container.periodic_x);
       writeFieldsFile(opt_.fields, a);
