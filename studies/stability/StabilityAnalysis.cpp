@@ -15,7 +15,7 @@ namespace {
 
 const std::string kRoot = "/results/stability";
 
-StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs) {
+StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs, SeedPatterns& seeds) {
   StabilityGrid grid;
   grid.frequencies = c.frequencies;
   grid.gammas = c.gammas;
@@ -32,6 +32,9 @@ StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs) {
           messages.push_back(r.message);
         }
         grid.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+        seeds.patterns[law].push_back(std::move(patterns));
+        seeds.finished[law].push_back(std::move(finished));
+        seeds.messages[law].push_back(std::move(messages));
       }
   return grid;
 }
@@ -168,7 +171,9 @@ void writeLaw(h5::File& f, const std::string& grp, const std::vector<LayerVerdic
 
 StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) {
   StabilityResults r;
-  r.grid = verdicts(c, runs);
+  SeedPatterns seeds;
+  r.grid = verdicts(c, runs, seeds);
+  r.bootstrap = bootstrapOverSeeds(r.grid, seeds);
   for (int law = 0; law < kLaws; ++law)
     for (double fr : c.frequencies)
       for (double gamma : c.gammas) r.hydro[law].push_back(hydroPoint(c, runs, law, fr, gamma));
@@ -197,6 +202,19 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   f.createGroup(features);
   for (const FeatureCheck& check : r.features)
     f.writeStringAttribute(features, check.key, check.verdict);
+  const std::string boot = kRoot + "/seed_bootstrap";
+  f.createGroup(boot);
+  f.writeAttribute<std::int64_t>(boot, "resamples", r.bootstrap.resamples);
+  for (const auto& [key, share] : r.bootstrap.verdict_agreement)
+    f.writeAttribute<double>(boot, key, share);
+  for (SolidCriterion sc : kSolidCriteria) {
+    const int k = static_cast<int>(sc);
+    if (r.bootstrap.differences_mean[k].empty()) continue;
+    putSeries(f, boot + "/differences_per_frequency_mean" + criterionKey(sc),
+              r.bootstrap.differences_mean[k], "1");
+    putSeries(f, boot + "/differences_per_frequency_std" + criterionKey(sc),
+              r.bootstrap.differences_std[k], "1");
+  }
 }
 
 }  // namespace granwave
