@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "coarse_grain/PatternSampler.hpp"
+#include "coarse_grain/PeriodDoublingSeries.hpp"
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
 #include "coarse_grain/WaveFront.hpp"
@@ -15,8 +16,9 @@ namespace granwave {
 struct FieldsContext {
   double diameter = 0, mass = 0, inertia = 0;
   double frequency = 0, amplitude = 0, T0 = 0;
-  int layer_period = 0;  // detected period of the centre of mass (0 = unknown)
-  std::string source;    // run file or "live"
+  int layer_period = 0;                  // detected period of the centre of mass (0 = unknown)
+  PeriodDoublingSeries period_doubling;  // the period-2 state window by window (may be empty)
+  std::string source;                    // run file or "live"
   std::string scene_toml;
 };
 

@@ -80,6 +80,54 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name, const F
   std::filesystem::rename(tmp, xdmf_path);
 }
 
+// The live classification (/patterns, docs/classification.md): both solid criteria.
+void writePatterns(h5::File& f, const PatternResult& pr) {
+  f.createGroup("/patterns");
+  const std::string g = "/patterns";
+  f.writeAttribute<std::int64_t>(g, "available", pr.available ? 1 : 0);
+  if (pr.available) {
+    f.writeAttribute<double>(g, "phase", pr.phase);
+    f.writeAttribute<std::int64_t>(g, "cycles", pr.cycles);
+    f.writeAttribute<std::int64_t>(g, "surface_wave", pr.surface_wave.detected ? 1 : 0);
+    f.writeAttribute<std::int64_t>(g, "surface_wave_mode", pr.surface_wave.mode);
+    f.writeAttribute<double>(g, "surface_wave_wavelength_d", pr.surface_wave.wavelength_d);
+    f.writeAttribute<double>(g, "surface_wave_amplitude_d", pr.surface_wave.amplitude_d);
+    f.writeAttribute<double>(g, "surface_wave_alternation", pr.surface_wave.alternation_fraction);
+    f.writeAttribute<std::int64_t>(g, "kinks", static_cast<std::int64_t>(pr.kinks.kink_x.size()));
+    f.writeStringAttribute(g, "state", std::string(toString(pr.state.state)));
+    f.writeAttribute<double>(g, "mean_abs_psi6", pr.state.mean_abs_psi6);
+    f.writeAttribute<double>(g, "mean_relative_displacement_d",
+                             pr.state.mean_relative_displacement_d);
+    f.writeAttribute<double>(g, "bonds_kept", pr.state.bonds_kept);
+    f.writeAttribute<double>(g, "bonds_kept_per_cycle", pr.state.bonds_kept_per_cycle);
+    const WithinCycleResult& w = pr.within_cycle;
+    f.writeStringAttribute(g, "within_cycle_state", std::string(toString(w.state)));
+    f.writeAttribute<double>(g, "within_cycle_crystal_share", w.crystal_share);
+    f.writeAttribute<double>(g, "within_cycle_amorphous_share", w.amorphous_share);
+    f.writeAttribute<double>(g, "within_cycle_liquid_share", w.liquid_share);
+    f.writeAttribute<double>(g, "within_cycle_coordination", w.coordination);
+    f.writeAttribute<double>(g, "within_cycle_psi6", w.psi6);
+    f.writeAttribute<double>(g, "within_cycle_compact_phase", w.compact_phase);
+    f.writeAttribute<double>(g, "lid_row", w.lid_row);
+    f.writeAttribute<double>(g, "lid_row_cycles", w.lid_row_cycles);
+  }
+}
+
+// The period-2 state window by window (/period_doubling, docs/classification.md, "Period").
+void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
+  if (pd.f2_strength.empty()) return;
+  const std::string g = "/period_doubling";
+  f.createGroup(g);
+  f.writeDataset(g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()});
+  f.writeAttribute<std::int64_t>(g, "window_cycles", pd.window_cycles);
+  f.writeAttribute<std::int64_t>(g, "first_cycle", pd.first_cycle);
+  f.writeAttribute<double>(g, "period2_share", pd.period2_share);
+  f.writeAttribute<double>(g, "share_low", pd.share_low);
+  f.writeAttribute<double>(g, "share_high", pd.share_high);
+  f.writeAttribute<double>(g, "effective_windows", pd.effective_windows);
+  f.writeAttribute<std::int64_t>(g, "switches", pd.switches);
+}
+
 }  // namespace
 
 std::string xdmfSidecarPath(const std::string& fields_path) {
@@ -184,28 +232,8 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
     f.writeDataset(grp + "/velocity", v, {Z, 1, X, 3});
   }
 
-  f.createGroup("/patterns");
-  {
-    const PatternResult& pr = a.patterns;
-    const std::string g = "/patterns";
-    f.writeAttribute<std::int64_t>(g, "available", pr.available ? 1 : 0);
-    if (pr.available) {
-      f.writeAttribute<double>(g, "phase", pr.phase);
-      f.writeAttribute<std::int64_t>(g, "cycles", pr.cycles);
-      f.writeAttribute<std::int64_t>(g, "surface_wave", pr.surface_wave.detected ? 1 : 0);
-      f.writeAttribute<std::int64_t>(g, "surface_wave_mode", pr.surface_wave.mode);
-      f.writeAttribute<double>(g, "surface_wave_wavelength_d", pr.surface_wave.wavelength_d);
-      f.writeAttribute<double>(g, "surface_wave_amplitude_d", pr.surface_wave.amplitude_d);
-      f.writeAttribute<double>(g, "surface_wave_alternation", pr.surface_wave.alternation_fraction);
-      f.writeAttribute<std::int64_t>(g, "kinks", static_cast<std::int64_t>(pr.kinks.kink_x.size()));
-      f.writeStringAttribute(g, "state", std::string(toString(pr.state.state)));
-      f.writeAttribute<double>(g, "mean_abs_psi6", pr.state.mean_abs_psi6);
-      f.writeAttribute<double>(g, "mean_relative_displacement_d",
-                               pr.state.mean_relative_displacement_d);
-      f.writeAttribute<double>(g, "bonds_kept", pr.state.bonds_kept);
-      f.writeAttribute<double>(g, "bonds_kept_per_cycle", pr.state.bonds_kept_per_cycle);
-    }
-  }
+  writePatterns(f, a.patterns);
+  writePeriodDoubling(f, a.context.period_doubling);
 
   f.createGroup("/parameters");
   const std::string par = "/parameters";

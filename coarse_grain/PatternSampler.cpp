@@ -64,8 +64,8 @@ std::vector<std::vector<Snapshot>> PatternSampler::cycles() const {
   return out;
 }
 
-PatternResult classifyPatterns(const PatternSampler& sampler, double width, double d,
-                               bool periodic_x) {
+PatternResult classifyPatterns(const PatternSampler& sampler, double width, double container_height,
+                               double d, bool periodic_x) {
   PatternResult r;
   const auto cycles = sampler.cycles();
   if (cycles.size() < 4) return r;
@@ -96,6 +96,7 @@ PatternResult classifyPatterns(const PatternSampler& sampler, double width, doub
   r.surface_wave = detectStandingWave(profiles);
   r.kinks = detectKinks(profiles);
   r.state = classifyState(same_phase, width, d, periodic_x);
+  r.within_cycle = classifyWithinCycles(cycles, width, container_height, d, periodic_x);
   return r;
 }
 

@@ -3,13 +3,15 @@
 // an observer keeps the snapshots of the last `keep_cycles` steady cycles at
 // `samples_per_cycle` phases; classification then looks at the phase where the centre of
 // mass is highest (the free flight, where the paper inspects the layer), across those
-// consecutive cycles: standing surface waves, kinks, and crystal / amorphous / liquid-like.
+// consecutive cycles: standing surface waves, kinks, and crystal / amorphous / liquid-like;
+// and, each cycle on its own over all its sampled phases, the within-cycle state.
 #include <deque>
 #include <vector>
 
 #include "coarse_grain/KinkDetector.hpp"
 #include "coarse_grain/StateClassifier.hpp"
 #include "coarse_grain/SurfaceWaveDetector.hpp"
+#include "coarse_grain/WithinCycleState.hpp"
 #include "particles/Checkpointable.hpp"
 #include "particles/Snapshot.hpp"
 
@@ -44,10 +46,12 @@ struct PatternResult {
   int cycles = 0;
   SurfaceWaveResult surface_wave;
   KinkResult kinks;
-  StateResult state;
+  StateResult state;               // the bond criterion, over the kept cycles
+  WithinCycleResult within_cycle;  // the within-cycle criterion, each kept cycle on its own
 };
 
-PatternResult classifyPatterns(const PatternSampler& sampler, double width, double diameter,
-                               bool periodic_x);
+// `container_height` places the lid (plate + height) for the within-cycle lid contact.
+PatternResult classifyPatterns(const PatternSampler& sampler, double width, double container_height,
+                               double diameter, bool periodic_x);
 
 }  // namespace granwave

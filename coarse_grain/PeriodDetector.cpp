@@ -2,11 +2,14 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+
+#include "coarse_grain/SteadyStateDetector.hpp"
 
 namespace granwave {
 
@@ -67,6 +70,17 @@ PeriodResult detectPeriod(const std::vector<double>& height, int discard_cycles,
   for (int p = 2; p <= opt.max_period; ++p) {
     if (r.strength[p] > opt.threshold) r.period = std::lcm(r.period, p);
   }
+  return r;
+}
+
+RunPeriod runPeriod(const std::vector<double>& com_height, int M) {
+  if (M < 4)
+    throw std::invalid_argument("period detection needs at least 4 samples per cycle, got " +
+                                std::to_string(M));
+  const int cycles = static_cast<int>(com_height.size()) / M;
+  RunPeriod r;
+  r.discarded = std::max({3, cycles / 5, steadyCycles(com_height, M)});
+  r.result = detectPeriod(com_height, r.discarded, {M});
   return r;
 }
 

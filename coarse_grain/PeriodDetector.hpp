@@ -32,4 +32,18 @@ struct PeriodResult {
 PeriodResult detectPeriod(const std::vector<double>& height, int discard_cycles,
                           const PeriodOptions& options = {});
 
+// The period of a whole run: the one rule every command uses (simulate's summary, simulate
+// --fields, fields, and through their files the studies), so a run has one period. Before
+// issue 15 `simulate` left out a fifth of the run and `fields` the steady-state detector's
+// transient; on a bistable layer the two windows could give 2T and 1T for the same run. The
+// transient left out is now the larger of the two (at least 3 cycles).
+struct RunPeriod {
+  PeriodResult result;
+  int discarded = 0;  // leading cycles left out
+};
+
+// `com_height`: M samples per cycle from a cycle boundary. Throws std::invalid_argument if
+// fewer than 12 cycles remain after the transient.
+RunPeriod runPeriod(const std::vector<double>& com_height, int samples_per_cycle);
+
 }  // namespace granwave

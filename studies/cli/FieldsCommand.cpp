@@ -14,6 +14,7 @@
 #include "scene/SceneParser.hpp"
 #include "studies/cli/FieldsSetup.hpp"
 #include "studies/cli/OptionChecks.hpp"
+#include "studies/cli/RunSummary.hpp"
 
 namespace granwave {
 
@@ -79,9 +80,14 @@ int runFields(const FieldsOptions& opt) {
       throw std::runtime_error(opt.run_path +
                                ": the layer never became steady (run longer, or give --discard)");
   }
+  // The run's period by the rule `simulate` uses (runPeriod), not over this command's
+  // window, so a run has one period.
   int layer_period = 0;
+  PeriodDoublingSeries period_doubling;
   try {
-    layer_period = detectPeriod(com, discard, {M}).period;
+    const RunPeriod rp = runPeriod(com, M);
+    layer_period = rp.result.period;
+    period_doubling = periodDoublingSeries(com, M, rp.discarded);
   } catch (const std::invalid_argument&) {
   }
   int P = period_choice;
@@ -101,11 +107,13 @@ int runFields(const FieldsOptions& opt) {
   fronts.threshold = opt.front_threshold;
   FieldsAnalysis a = analyseFields(
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
-  a.patterns = classifyPatterns(patterns, scene.container.width, scene.particles.diameter,
-                                scene.container.periodic_x);
+  a.context.period_doubling = period_doubling;
+  a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
+                                scene.particles.diameter, scene.container.periodic_x);
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);
+  if (!period_doubling.period2.empty()) fmt::print("{}", formatPeriodDoubling(period_doubling));
   fmt::print("{}", formatFieldsSummary(a));
   fmt::print("output          {} (+ {})\n", out, xdmfSidecarPath(out));
   return 0;

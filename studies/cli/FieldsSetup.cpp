@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -66,6 +67,14 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
         p.surface_wave.mode, p.surface_wave.amplitude_d, p.surface_wave.alternation_fraction,
         p.kinks.kink_x.size(), p.state.mean_abs_psi6, p.state.bonds_kept,
         p.state.bonds_kept_per_cycle, p.state.mean_relative_displacement_d);
+    const WithinCycleResult& w = p.within_cycle;
+    r += fmt::format(
+        "within a cycle  {} in {:.0f} % of {} cycles (crystal {:.0f} %, amorphous {:.0f} %, "
+        "liquid-like {:.0f} %) at the most compact phase t/T = {:.1f}: {:.2f} neighbours, "
+        "<|psi6|> {:.2f}; on the lid {:.1f} particles per cycle ({:.0f} % of cycles)\n",
+        toString(w.state), 100 * std::max({w.crystal_share, w.amorphous_share, w.liquid_share}),
+        w.cycles, 100 * w.crystal_share, 100 * w.amorphous_share, 100 * w.liquid_share,
+        w.compact_phase, w.coordination, w.psi6, w.lid_row, 100 * w.lid_row_cycles);
   }
   for (const FrontEpisode& e : a.fronts) {
     if (!e.from_impact) continue;

@@ -25,15 +25,32 @@ const char* lawName(RestitutionKind k) {
 
 bool summarisePeriod(const RunSummaryInput& in, PeriodResult& out, int& discarded) {
   if (in.scene->drive.frequency <= 0) return false;
-  const int M = in.scene->run.phases_per_cycle;
-  const int cycles = static_cast<int>(in.com_height.size()) / M;
-  discarded = std::max(3, cycles / 5);
   try {
-    out = detectPeriod(in.com_height, discarded, {M});
+    const RunPeriod r = runPeriod(in.com_height, in.scene->run.phases_per_cycle);
+    out = r.result;
+    discarded = r.discarded;
   } catch (const std::invalid_argument&) {
     return false;
   }
   return true;
+}
+
+bool summarisePeriodDoubling(const RunSummaryInput& in, PeriodDoublingSeries& out) {
+  PeriodResult p;
+  int discarded = 0;
+  if (!summarisePeriod(in, p, discarded)) return false;
+  out = periodDoublingSeries(in.com_height, in.scene->run.phases_per_cycle, discarded);
+  return true;
+}
+
+std::string formatPeriodDoubling(const PeriodDoublingSeries& s) {
+  int n = 0;
+  for (int v : s.period2) n += v;
+  return fmt::format(
+      "period-2 state  f/2 strength above 0.1 in {} of {} windows of {} cycles (share {:.2f}, "
+      "95 % interval {:.2f}-{:.2f}, {:.1f} effective windows), {} switch(es)\n",
+      n, s.period2.size(), s.window_cycles, s.period2_share, s.share_low, s.share_high,
+      s.effective_windows, s.switches);
 }
 
 std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
@@ -83,6 +100,8 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
         "centre of mass  period {}T (subharmonic strength f/2: {:.3f}, f/3: {:.3f}, f/4: {:.3f}; "
         "threshold 0.1; {} cycles after {} discarded)\n",
         p.period, p.strength[2], p.strength[3], p.strength[4], p.cycles_used, discarded);
+    PeriodDoublingSeries series;
+    if (summarisePeriodDoubling(in, series)) r += formatPeriodDoubling(series);
   } else if (dv.driven) {
     r += "centre of mass  period not determined (fewer than 12 steady cycles)\n";
   }

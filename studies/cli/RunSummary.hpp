@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "coarse_grain/PeriodDetector.hpp"
+#include "coarse_grain/PeriodDoublingSeries.hpp"
 #include "particles/Snapshot.hpp"
 #include "scene/Scene.hpp"
 
@@ -26,8 +27,16 @@ struct RunSummaryInput {
 };
 
 // Period of the centre-of-mass motion, if the run is driven and long enough (12 cycles
-// after the discarded transient: the first fifth of the run, at least 3 cycles).
+// after the discarded transient): runPeriod, the rule `fields` uses too.
 bool summarisePeriod(const RunSummaryInput& in, PeriodResult& out, int& discarded);
+
+// The run's period-2 state window by window over the same steady part (PeriodDoublingSeries),
+// if the run is driven and long enough.
+bool summarisePeriodDoubling(const RunSummaryInput& in, PeriodDoublingSeries& out);
+
+// "period-2 state   in 4 of 12 windows of 12 cycles (share 0.33, 95 % interval 0.12-0.65,
+// 5.1 effective windows), 2 switches"
+std::string formatPeriodDoubling(const PeriodDoublingSeries& s);
 // With include_timing = false the wall-clock lines are left out: that version is stored in
 // the run file, which must be bit-identical for the same scene and seed.
 std::string formatRunSummary(const RunSummaryInput& in, bool include_timing = true);

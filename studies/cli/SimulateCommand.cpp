@@ -291,8 +291,9 @@ class SimulationRun {
     const int layer_period = summarisePeriod(in, period, discarded) ? period.period : 0;
     FieldsAnalysis a = analyseFields(*averager_, fieldsContext(scene_, "live: " + opt_.scene_path,
                                                                sceneToToml(scene_), layer_period));
-    a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.particles.diameter,
-                                  scene_.container.periodic_x);
+    summarisePeriodDoubling(in, a.context.period_doubling);
+    a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
+                                  scene_.particles.diameter, scene_.container.periodic_x);
     return a;
   }
 

@@ -69,7 +69,9 @@ Deficiency ratioOf(const ParticleFields& dry, const ParticleFields& wet, int blo
 // Both runs of the seed and the onsets of their strong impact fronts; false if unusable.
 bool readLayers(const MomentumTransferConfig& c, const RunSet& runs, SeedPair& p) {
   for (int law = 0; law < kLaws; ++law) {
-    const RunRecord& r = runs.get(MomentumTransferConfig::label(law, p.seed));
+    const RunRecord& r = runs.get(
+        p.other_window > 0 ? MomentumTransferConfig::otherWindowLabel(law, p.seed, p.other_window)
+                           : MomentumTransferConfig::label(law, p.seed));
     if (!r.ok) {
       p.failure += fmt::format("{}{} run failed: {}", p.failure.empty() ? "" : "; ", kLawNames[law],
                                shortReason(r.message));
@@ -378,6 +380,18 @@ MomentumTransferResults analyseMomentumTransfer(const MomentumTransferConfig& c,
     analysePair(c, runs, p);
     a.pairs.push_back(std::move(p));
   }
+  a.window = c.window;
+  a.other_window = c.otherWindow();
+  std::vector<Measurement> other;
+  for (int seed : c.seeds) {
+    SeedPair p;
+    p.seed = seed;
+    p.other_window = a.other_window;
+    analysePair(c, runs, p);
+    if (p.failure.empty()) other.push_back(p.r);
+    a.other_pairs.push_back(std::move(p));
+  }
+  a.r_other_window = combine(other);
   const std::vector<const SeedPair*> ok = a.ok();
   if (ok.empty()) return a;
   a.per_cycle = ok.front()->per_cycle;
@@ -396,6 +410,8 @@ void writeMomentumTransferResults(h5::File& f, const MomentumTransferConfig& c,
   putMeasurement(f, kRoot, "r_x_wave", a.r);
   putMeasurement(f, kRoot, "r_x_wave_all_rows", a.r_all_rows);
   putMeasurement(f, kRoot, "r_x_wave_dry_at_own_onset", a.r_aligned);
+  putMeasurement(f, kRoot, fmt::format("r_x_wave_window_{}", a.window), a.r);
+  putMeasurement(f, kRoot, fmt::format("r_x_wave_window_{}", a.other_window), a.r_other_window);
   putValue(f, kRoot, "r_x_wave_std_over_phases", a.window_std);
   putMeasurement(f, kRoot, "fraction_r_x_above_1", a.above_one);
   putMeasurement(f, kRoot, "rms_velocity_x_dry", a.rms[0]);

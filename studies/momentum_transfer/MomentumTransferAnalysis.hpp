@@ -25,7 +25,8 @@ inline constexpr double kPaperOnset = 0.88;  // the paper's impact begins at t/T
 // A dry and a wet run of one seed, the onsets of their strong impact fronts, and r_x.
 struct SeedPair {
   int seed = 0;
-  std::string failure;  // empty: both runs usable
+  int other_window = 0;  // 0: the study's window; else the runs with this other window
+  std::string failure;   // empty: both runs usable
   std::optional<ParticleFields> layer[2];
   double onset[2] = {NAN, NAN};  // t/T within the window
   bool found[2] = {false, false};
@@ -63,6 +64,9 @@ struct MomentumTransferResults {
   std::vector<SeedPair> pairs;
   int n_wave = 1, n_margin = 0, per_cycle = 100, nz = 0, j0 = -1, j1 = -1;
   Measurement r, r_all_rows, r_aligned, rms[2], above_one, r_signal, noise_share[2];
+  int window = 2, other_window = 1;
+  Measurement r_other_window;         // r~_x from the runs with the other phase window
+  std::vector<SeedPair> other_pairs;  // their seeds
   double window_std = NAN, z_paper = NAN, z_binary = NAN;
   std::vector<double> tau, row_mean, row_error;  // around the wave, from the wet onset
   std::vector<double> map;                       // [z][tau], mean over seeds

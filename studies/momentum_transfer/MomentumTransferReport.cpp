@@ -119,6 +119,14 @@ Table deficiencyTable(const Results& a) {
   row(fmt::format("combined, {} seed(s)", a.ok().size()), a.r, a.window_std);
   row("combined, all rows (no area-fraction cut)", a.r_all_rows, NAN);
   row("combined, dry read at the same stage of its own impact", a.r_aligned, NAN);
+  for (const SeedPair& p : a.other_pairs)
+    if (p.failure.empty())
+      row(fmt::format("ED seed {}, {}-cycle window", p.seed, a.other_window), p.r,
+          p.pooled.std_dev);
+  row(fmt::format("combined, {}-cycle window (the same runs' trajectories; the table above: {} "
+                  "cycle(s))",
+                  a.other_window, a.window),
+      a.r_other_window, NAN);
   row("combined, phase-locked part only (noise subtracted, spread over seeds)", a.r_signal, NAN);
   t.rows.push_back({"earlier measurement, docs/fields.md (seed 1, 30 s)",
                     formatNumber(kEarlierDeficiency.value), formatNumber(kEarlierDeficiency.error),

@@ -11,6 +11,10 @@ std::string MomentumTransferConfig::label(int law, int seed) {
   return particleLabel(law, fmt::format("seed {}", seed));
 }
 
+std::string MomentumTransferConfig::otherWindowLabel(int law, int seed, int window) {
+  return particleLabel(law, fmt::format("seed {}, {}-cycle window", seed, window));
+}
+
 MomentumTransferStudy::MomentumTransferStudy(StudyFile& f) {
   c_.scenes = LawScenes::read(f);
   c_.duration = f.number("particles", "duration", c_.duration);
@@ -48,7 +52,11 @@ MomentumTransferStudy::MomentumTransferStudy(StudyFile& f) {
                                                  fmt::format("run.duration={:g}", c_.duration)}));
       q.window_cycles = c_.window;
       q.blocks = c_.blocks;
+      RunRequest other = q;  // the same trajectory (scene and seed), the other window
+      other.label = MomentumTransferConfig::otherWindowLabel(law, seed, c_.otherWindow());
+      other.window_cycles = c_.otherWindow();
       requests_.push_back(std::move(q));
+      requests_.push_back(std::move(other));
     }
 }
 

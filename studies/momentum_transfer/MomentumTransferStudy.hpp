@@ -25,6 +25,10 @@ struct MomentumTransferConfig {
   double min_area_fraction = 0.1;  // rows where either layer is more dilute are left out
 
   static std::string label(int law, int seed);
+  // The same seed's run with the other phase window (1 cycle if `window` is 2 or more, else
+  // 2): r_x with both windows (a 1-cycle window averages a period-2 layer's two impacts).
+  int otherWindow() const { return window == 1 ? 2 : 1; }
+  static std::string otherWindowLabel(int law, int seed, int window);
 };
 
 class MomentumTransferStudy final : public Study {

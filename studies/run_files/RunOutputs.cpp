@@ -109,6 +109,10 @@ LayerPatterns readLayerPatterns(const std::string& path) {
   r.mobility_d = f.readAttribute<double>(g, "mean_relative_displacement_d");
   r.bonds_kept = f.readAttribute<double>(g, "bonds_kept");
   r.bonds_kept_per_cycle = f.readAttribute<double>(g, "bonds_kept_per_cycle");
+  r.within_cycle_state = f.readStringAttribute(g, "within_cycle_state");
+  r.within_cycle_coordination = f.readAttribute<double>(g, "within_cycle_coordination");
+  r.within_cycle_psi6 = f.readAttribute<double>(g, "within_cycle_psi6");
+  r.lid_row = f.readAttribute<double>(g, "lid_row");
   return r;
 }
 

@@ -62,6 +62,10 @@ struct LayerPatterns {
   int surface_wave_mode = 0, kinks = 0, period = 0;
   double surface_wave_amplitude_d = 0, psi6 = 0, mobility_d = 0, bonds_kept = 1;
   double bonds_kept_per_cycle = 1;
+  // The within-cycle criterion (coarse_grain/WithinCycleState.hpp): its label, the mean
+  // neighbours and <|psi6|> at each cycle's most compact phase, and the particles on the lid.
+  std::string within_cycle_state;
+  double within_cycle_coordination = 0, within_cycle_psi6 = 0, lid_row = 0;
 };
 
 // Particle positions of one recorded frame (lab frame, m).

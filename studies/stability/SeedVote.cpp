@@ -4,11 +4,19 @@
 
 namespace granwave {
 
+const char* criterionName(SolidCriterion c) {
+  return c == SolidCriterion::bonds ? "bonds over 15 cycles" : "within one cycle";
+}
+
+const char* criterionKey(SolidCriterion c) {
+  return c == SolidCriterion::bonds ? "" : "_within_cycle";
+}
+
 bool LayerVerdict::seedsAgree() const {
   // A question no seed answered is no disagreement; all seeds failing is agreement too.
   const auto same = [](const auto& v) { return v.of == 0 || v.unanimous(); };
-  return same(state) && same(period) && same(surface_wave) && same(kinks) &&
-         (failed == 0 || failed == runs);
+  return same(state) && same(within_cycle_state) && same(period) && same(surface_wave) &&
+         same(kinks) && (failed == 0 || failed == runs);
 }
 
 LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,
@@ -21,7 +29,7 @@ LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,
                                 " messages; one of each per seed is needed");
   LayerVerdict v;
   v.runs = static_cast<int>(patterns.size());
-  std::vector<std::string> states;
+  std::vector<std::string> states, within;
   std::vector<int> periods;
   std::vector<bool> waves, kinks;
   for (std::size_t k = 0; k < patterns.size(); ++k) {
@@ -33,6 +41,10 @@ LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,
     periods.push_back(p.period);
     if (!p.available) continue;
     states.push_back(p.state);
+    within.push_back(p.within_cycle_state);
+    v.within_cycle_coordination += p.within_cycle_coordination;
+    v.within_cycle_psi6 += p.within_cycle_psi6;
+    v.lid_row += p.lid_row;
     waves.push_back(p.surface_wave);
     kinks.push_back(p.kinks > 0);
     v.psi6 += p.psi6;
@@ -44,6 +56,7 @@ LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,
     }
   }
   v.state = mostFrequent(states);
+  v.within_cycle_state = mostFrequent(within);
   v.period = mostFrequent(periods);
   v.surface_wave = mostFrequent(waves);
   v.kinks = mostFrequent(kinks);
@@ -51,6 +64,9 @@ LayerVerdict voteOverSeeds(const std::vector<LayerPatterns>& patterns,
     v.psi6 /= static_cast<double>(states.size());
     v.bonds_kept /= static_cast<double>(states.size());
     v.bonds_kept_per_cycle /= static_cast<double>(states.size());
+    v.within_cycle_coordination /= static_cast<double>(states.size());
+    v.within_cycle_psi6 /= static_cast<double>(states.size());
+    v.lid_row /= static_cast<double>(states.size());
   }
   int n_waves = 0;
   for (bool w : waves) n_waves += w;

@@ -15,7 +15,7 @@ namespace {
 
 const std::string kRoot = "/results/stability";
 
-StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs) {
+StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs, SeedPatterns& seeds) {
   StabilityGrid grid;
   grid.frequencies = c.frequencies;
   grid.gammas = c.gammas;
@@ -32,6 +32,9 @@ StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs) {
           messages.push_back(r.message);
         }
         grid.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+        seeds.patterns[law].push_back(std::move(patterns));
+        seeds.finished[law].push_back(std::move(finished));
+        seeds.messages[law].push_back(std::move(messages));
       }
   return grid;
 }
@@ -110,15 +113,37 @@ std::vector<double> hydroPeriods(const std::vector<HydroPoint>& hydro) {
   return out;
 }
 
+double stateCode(const Vote<std::string>& v) {
+  const auto it = std::find(kLayerStates.begin(), kLayerStates.end(), v.value);
+  return v.of > 0 && it != kLayerStates.end() ? static_cast<double>(it - kLayerStates.begin())
+                                              : NAN;
+}
+
+// The within-cycle criterion's numbers per point (the bond criterion's are in writeLaw).
+void writeWithinCycle(h5::File& f, const std::string& grp,
+                      const std::vector<LayerVerdict>& verdicts) {
+  std::vector<double> state, votes, coordination, psi6, lid;
+  for (const LayerVerdict& v : verdicts) {
+    state.push_back(stateCode(v.within_cycle_state));
+    votes.push_back(v.within_cycle_state.count);
+    coordination.push_back(v.classified() ? v.within_cycle_coordination : NAN);
+    psi6.push_back(v.classified() ? v.within_cycle_psi6 : NAN);
+    lid.push_back(v.classified() ? v.lid_row : NAN);
+  }
+  putSeries(f, grp + "/within_cycle_state", state, "1");
+  putSeries(f, grp + "/within_cycle_state_votes", votes, "1");
+  putSeries(f, grp + "/within_cycle_coordination", coordination, "1");
+  putSeries(f, grp + "/within_cycle_psi6", psi6, "1");
+  putSeries(f, grp + "/lid_row", lid, "1");
+}
+
 void writeLaw(h5::File& f, const std::string& grp, const std::vector<LayerVerdict>& verdicts,
               const std::vector<HydroPoint>& hydro, const std::vector<HydroPoint>& rough) {
   std::vector<double> state, state_votes, classified, period, period_votes, wave, wave_votes, kinks,
       kinks_votes, agree;
   for (const LayerVerdict& v : verdicts) {
-    const auto it = std::find(kLayerStates.begin(), kLayerStates.end(), v.state.value);
     const bool c = v.classified();
-    state.push_back(c && it != kLayerStates.end() ? static_cast<double>(it - kLayerStates.begin())
-                                                  : NAN);
+    state.push_back(stateCode(v.state));
     state_votes.push_back(v.state.count);
     classified.push_back(v.state.of);
     period.push_back(v.period.of > 0 ? v.period.value : NAN);
@@ -146,13 +171,16 @@ void writeLaw(h5::File& f, const std::string& grp, const std::vector<LayerVerdic
   putSeries(f, grp + "/seeds_agree", agree, "1");
   putSeries(f, grp + "/hydro_period", hydroPeriods(hydro), "1");
   putSeries(f, grp + "/hydro_rough_period", hydroPeriods(rough), "1");
+  writeWithinCycle(f, grp, verdicts);
 }
 
 }  // namespace
 
 StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) {
   StabilityResults r;
-  r.grid = verdicts(c, runs);
+  SeedPatterns seeds;
+  r.grid = verdicts(c, runs, seeds);
+  r.bootstrap = bootstrapOverSeeds(r.grid, seeds);
   for (int law = 0; law < kLaws; ++law)
     for (double fr : c.frequencies)
       for (double gamma : c.gammas) {
@@ -160,6 +188,8 @@ StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) 
         r.hydro_rough[law].push_back(hydroPoint(c, runs, law, fr, gamma, true));
       }
   r.symbol_differences = r.grid.symbolDifferencesPerFrequency();
+  r.symbol_differences_within_cycle =
+      r.grid.symbolDifferencesPerFrequency(SolidCriterion::within_cycle);
   r.period_differences = r.grid.periodDifferencesPerFrequency();
   r.features = checkPaperFeatures(r.grid);
   r.gallery = gallery(c, runs, r.grid);
@@ -173,6 +203,8 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   const std::vector<double> seeds(c.seeds.begin(), c.seeds.end());
   putSeries(f, kRoot + "/seeds", seeds, "1");
   putSeries(f, kRoot + "/differences_per_frequency", r.symbol_differences, "1");
+  putSeries(f, kRoot + "/differences_per_frequency_within_cycle", r.symbol_differences_within_cycle,
+            "1");
   putSeries(f, kRoot + "/period_differences_per_frequency", r.period_differences, "1");
   for (int law = 0; law < kLaws; ++law)
     writeLaw(f, fmt::format("{}/{}", kRoot, kLawNames[law]), r.grid.verdicts[law], r.hydro[law],
@@ -181,6 +213,19 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   f.createGroup(features);
   for (const FeatureCheck& check : r.features)
     f.writeStringAttribute(features, check.key, check.verdict);
+  const std::string boot = kRoot + "/seed_bootstrap";
+  f.createGroup(boot);
+  f.writeAttribute<std::int64_t>(boot, "resamples", r.bootstrap.resamples);
+  for (const auto& [key, share] : r.bootstrap.verdict_agreement)
+    f.writeAttribute<double>(boot, key, share);
+  for (SolidCriterion sc : kSolidCriteria) {
+    const int k = static_cast<int>(sc);
+    if (r.bootstrap.differences_mean[k].empty()) continue;
+    putSeries(f, boot + "/differences_per_frequency_mean" + criterionKey(sc),
+              r.bootstrap.differences_mean[k], "1");
+    putSeries(f, boot + "/differences_per_frequency_std" + criterionKey(sc),
+              r.bootstrap.differences_std[k], "1");
+  }
 }
 
 }  // namespace granwave

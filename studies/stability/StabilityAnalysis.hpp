@@ -9,6 +9,7 @@
 #include "h5/File.hpp"
 #include "studies/framework/Study.hpp"
 #include "studies/run_files/RunOutputs.hpp"
+#include "studies/stability/SeedBootstrap.hpp"
 #include "studies/stability/StabilityFeatures.hpp"
 #include "studies/stability/StabilityGrid.hpp"
 #include "studies/stability/StabilityStudy.hpp"
@@ -41,7 +42,9 @@ struct StabilityResults {
   std::vector<HydroPoint> hydro[2];                            // [law][i_f * gammas + j_gamma]
   std::vector<HydroPoint> hydro_rough[2];                      // the same, rough particles
   std::vector<double> symbol_differences, period_differences;  // per frequency
+  std::vector<double> symbol_differences_within_cycle;         // state by the second criterion
   std::vector<FeatureCheck> features;
+  SeedBootstrap bootstrap;               // how the verdicts depend on the choice of seeds
   std::vector<GallerySnapshot> gallery;  // by state, then law, f, Gamma
 };
 

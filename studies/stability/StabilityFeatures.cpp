@@ -41,16 +41,21 @@ struct LowestFrequency {
 
   const LayerVerdict& at(int law, std::size_t j) const { return grid.at(law, i0, j); }
 
-  // The states for the Gamma values in `in`, e.g. "Gamma = 6: liquid-like (3/3), 7: ...".
-  std::string states(int law, const GammaRange& in, bool bonds = false) const {
+  // The states by `c` for the Gamma values in `in`, e.g. "Gamma = 6: liquid-like (3/3), 7:
+  // ..."; with `numbers` the measurements the state comes from.
+  std::string states(int law, const GammaRange& in, SolidCriterion c, bool numbers = false) const {
     std::string s;
     for (std::size_t j = 0; j < grid.gammas.size(); ++j) {
       const LayerVerdict& v = at(law, j);
       if (!in(grid.gammas[j]) || !v.classified()) continue;
-      s += (s.empty() ? "Gamma = " : ", ") + formatCompact(grid.gammas[j]) + ": " + votes(v.state);
-      if (bonds)
+      s += (s.empty() ? "Gamma = " : ", ") + formatCompact(grid.gammas[j]) + ": " +
+           votes(v.stateBy(c));
+      if (numbers && c == SolidCriterion::bonds)
         s += fmt::format(", bonds kept {:.2f} over 15 cycles, {:.2f} over one", v.bonds_kept,
                          v.bonds_kept_per_cycle);
+      if (numbers && c == SolidCriterion::within_cycle)
+        s += fmt::format(", {:.1f} neighbours and psi6 {:.2f} when most compact, {:.1f} on the lid",
+                         v.within_cycle_coordination, v.within_cycle_psi6, v.lid_row);
     }
     return s.empty() ? std::string("no classified point") : s;
   }
@@ -69,8 +74,9 @@ struct LowestFrequency {
   }
 };
 
-// Fluid for Gamma in [3, 5] and not at Gamma = 2; solid again at Gamma >= 6.
-void fluidizationChecks(const LowestFrequency& lf, int law, std::vector<FeatureCheck>& out) {
+// Fluid for Gamma in [3, 5] and not at Gamma = 2; solid again at Gamma >= 6; by criterion `c`.
+void fluidizationChecks(const LowestFrequency& lf, int law, SolidCriterion c,
+                        std::vector<FeatureCheck>& out) {
   const std::vector<double>& gammas = lf.grid.gammas;
   bool fluid_mid = true, solid_low = true, solid_high = true;
   bool any_low = false, any_high = false, any_mid = false;
@@ -78,7 +84,7 @@ void fluidizationChecks(const LowestFrequency& lf, int law, std::vector<FeatureC
     const LayerVerdict& v = lf.at(law, j);
     const double gm = gammas[j];
     if (!v.classified()) continue;
-    const bool liquid = v.state.value == "liquid-like";
+    const bool liquid = v.stateBy(c).value == "liquid-like";
     if (mid(gm)) any_mid = true, fluid_mid &= liquid;
     if (low(gm)) any_low = true, solid_low &= !liquid;
     if (high(gm)) any_high = true, solid_high &= !liquid;
@@ -89,13 +95,15 @@ void fluidizationChecks(const LowestFrequency& lf, int law, std::vector<FeatureC
                                           : "yes for Gamma in [3, 5]; Gamma <= 2 not tested";
   const auto to5 = [](double gm) { return gm <= 5; };
   const std::string name = kLawNames[law];
-  out.push_back({name + "_fluidized",
-                 fmt::format("{}: fluidized for Gamma in [3, 5], not at Gamma = 2 (f = {:g} Hz)",
-                             name, lf.f0),
-                 lf.states(law, to5), qualified(fluidized, lf.unclassified(law, to5))});
-  out.push_back({name + "_solid_again",
-                 fmt::format("{}: solid again at Gamma >= 6 (f = {:g} Hz)", name, lf.f0),
-                 lf.states(law, high, true),
+  const std::string key = criterionKey(c), by = criterionName(c);
+  out.push_back(
+      {name + "_fluidized" + key,
+       fmt::format("{}: fluidized for Gamma in [3, 5], not at Gamma = 2 (f = {:g} Hz; {})", name,
+                   lf.f0, by),
+       lf.states(law, to5, c), qualified(fluidized, lf.unclassified(law, to5))});
+  out.push_back({name + "_solid_again" + key,
+                 fmt::format("{}: solid again at Gamma >= 6 (f = {:g} Hz; {})", name, lf.f0, by),
+                 lf.states(law, high, c, true),
                  qualified(any_high ? (solid_high ? "yes" : "no")
                            : std::any_of(gammas.begin(), gammas.end(), high)
                                ? "not tested (no classified Gamma >= 6)"
@@ -130,10 +138,13 @@ FeatureCheck surfaceWaveCheck(const LowestFrequency& lf) {
 }
 
 // "At Gamma ~ 5, both dry and wet granular layers crystallize again" as f increases.
-FeatureCheck crystalAgainCheck(const LowestFrequency& lf) {
+FeatureCheck crystalAgainCheck(const LowestFrequency& lf, SolidCriterion c) {
   const StabilityGrid& grid = lf.grid;
-  const char* key = "crystal_again_at_gamma_5";
-  const char* feature = "both layers crystallize again at Gamma = 5 as f increases";
+  const std::string key = std::string("crystal_again_at_gamma_5") + criterionKey(c);
+  const std::string feature = std::string(
+                                  "both layers crystallize again at Gamma = 5 as f "
+                                  "increases (") +
+                              criterionName(c) + ")";
   const auto g5 = std::find(grid.gammas.begin(), grid.gammas.end(), 5.0);
   if (g5 == grid.gammas.end() || grid.frequencies.size() < 2)
     return {key, feature, "–", "not tested (Gamma = 5 or a second frequency not on the grid)"};
@@ -144,8 +155,8 @@ FeatureCheck crystalAgainCheck(const LowestFrequency& lf) {
   for (std::size_t i = 0; i < grid.frequencies.size(); ++i) {
     const LayerVerdict &a = grid.at(0, i, j5), &b = grid.at(1, i, j5);
     if (grid.frequencies[i] == f_top) top_classified = a.classified() && b.classified();
-    const bool both = a.classified() && b.classified() && a.state.value == "crystal" &&
-                      b.state.value == "crystal";
+    const bool both = a.classified() && b.classified() && a.stateBy(c).value == "crystal" &&
+                      b.stateBy(c).value == "crystal";
     if (!both || grid.frequencies[i] <= lf.f0) continue;
     where += (where.empty() ? "" : ", ") + formatCompact(grid.frequencies[i]) + " Hz";
     at_top |= grid.frequencies[i] == f_top;
@@ -159,10 +170,10 @@ FeatureCheck crystalAgainCheck(const LowestFrequency& lf) {
 // A smaller share of differing points among the comparable ones (both laws classified) at
 // every higher f than at the lowest; nothing to shrink without a difference at the lowest f,
 // nothing to compare at a frequency without comparable points.
-FeatureCheck differencesShrinkCheck(const LowestFrequency& lf) {
+FeatureCheck differencesShrinkCheck(const LowestFrequency& lf, SolidCriterion c) {
   const StabilityGrid& grid = lf.grid;
   const std::size_t NF = grid.frequencies.size(), i0 = lf.i0;
-  const std::vector<double> n = grid.symbolDifferencesPerFrequency();
+  const std::vector<double> n = grid.symbolDifferencesPerFrequency(c);
   std::vector<double> comparable(NF, 0);
   for (std::size_t i = 0; i < NF; ++i)
     for (std::size_t j = 0; j < grid.gammas.size(); ++j)
@@ -176,8 +187,9 @@ FeatureCheck differencesShrinkCheck(const LowestFrequency& lf) {
     per_f += fmt::format("{}{:g} Hz: {:g} of {:g}", i ? ", " : "", grid.frequencies[i], n[i],
                          comparable[i]);
   }
-  return {"differences_shrink_with_f",
-          "dry-wet differences (state, surface waves, kinks) smaller at higher f",
+  return {std::string("differences_shrink_with_f") + criterionKey(c),
+          std::string("dry-wet differences (state, surface waves, kinks) smaller at higher f (") +
+              criterionName(c) + ")",
           "points that differ, of those classified for both laws: " + per_f,
           NF < 2            ? "not tested (one frequency)"
           : !all_comparable ? "not tested (a frequency without classified points)"
@@ -190,10 +202,13 @@ FeatureCheck differencesShrinkCheck(const LowestFrequency& lf) {
 std::vector<FeatureCheck> checkPaperFeatures(const StabilityGrid& grid) {
   const LowestFrequency lf(grid);
   std::vector<FeatureCheck> out;
-  for (int law = 0; law < kLaws; ++law) fluidizationChecks(lf, law, out);
+  for (SolidCriterion c : kSolidCriteria)
+    for (int law = 0; law < kLaws; ++law) fluidizationChecks(lf, law, c, out);
   out.push_back(surfaceWaveCheck(lf));
-  out.push_back(crystalAgainCheck(lf));
-  out.push_back(differencesShrinkCheck(lf));
+  for (SolidCriterion c : kSolidCriteria) {
+    out.push_back(crystalAgainCheck(lf, c));
+    out.push_back(differencesShrinkCheck(lf, c));
+  }
   return out;
 }
 

@@ -6,6 +6,8 @@
 //   - at the lowest f the dry layer shows surface waves for Gamma in [3, 5], the wet one none;
 //   - both layers are crystals again at Gamma = 5 at the highest f;
 //   - the dry-wet differences in the diagram's symbols shrink as f rises.
+// Every check that involves the state is made twice, once per solid criterion (SeedVote.hpp):
+// keys without suffix for the bond criterion, with "_within_cycle" for the other.
 #include <cstddef>
 #include <string>
 #include <vector>

@@ -18,12 +18,15 @@ struct StabilityGrid {
     return verdicts[law][i * gammas.size() + j];
   }
   // Dry and wet differ in a symbol of the paper's diagram (Fig. 3: the state, surface waves,
-  // kinks), by the seeds' verdicts. False where either law has no classified run.
-  bool symbolsDiffer(std::size_t i, std::size_t j) const;
+  // kinks), by the seeds' verdicts, the state by `criterion`. False where either law has no
+  // classified run.
+  bool symbolsDiffer(std::size_t i, std::size_t j,
+                     SolidCriterion criterion = SolidCriterion::bonds) const;
   // Dry and wet differ in the centre-of-mass period (modal over the seeds).
   bool periodsDiffer(std::size_t i, std::size_t j) const;
   // The number of Gamma points per frequency where symbolsDiffer (resp. periodsDiffer).
-  std::vector<double> symbolDifferencesPerFrequency() const;
+  std::vector<double> symbolDifferencesPerFrequency(
+      SolidCriterion criterion = SolidCriterion::bonds) const;
   std::vector<double> periodDifferencesPerFrequency() const;
 };
 

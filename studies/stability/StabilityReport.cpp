@@ -29,6 +29,11 @@ std::string describe(const LayerVerdict& v) {
       "over one",
       v.state.value, v.state.count, v.state.of, v.period.value, v.period.count, v.period.of, v.psi6,
       v.bonds_kept, v.bonds_kept_per_cycle);
+  s += fmt::format(
+      "; within one cycle {} ({}/{}), {:.1f} neighbours and psi6 {:.2f} when most compact, "
+      "{:.1f} particles on the lid",
+      v.within_cycle_state.value, v.within_cycle_state.count, v.within_cycle_state.of,
+      v.within_cycle_coordination, v.within_cycle_psi6, v.lid_row);
   const int waves =
       v.surface_wave.value ? v.surface_wave.count : v.surface_wave.of - v.surface_wave.count;
   if (waves > 0)
@@ -62,13 +67,15 @@ double spacing(const std::vector<double>& v) {
              : 1.0;
 }
 
-Figure diagram(const StabilityConfig& c, const StabilityGrid& grid, int law) {
+Figure diagram(const StabilityConfig& c, const StabilityGrid& grid, int law,
+               SolidCriterion criterion) {
   Figure fig;
-  fig.title = std::string("Stability diagram, ") + kLawNames[law];
+  fig.title =
+      fmt::format("Stability diagram, {} (state: {})", kLawNames[law], criterionName(criterion));
   fig.caption =
       "Particles, the most frequent verdict over the seeds. Unclassified or failed points are "
-      "left blank; a grey star beside a point: its seeds disagree (state, period, waves or "
-      "kinks), or some of them failed; the table gives the votes.";
+      "left blank; a grey star beside a point: its seeds disagree (either state, period, waves "
+      "or kinks), or some of them failed; the table gives the votes.";
   fig.xlabel = "Gamma";
   fig.ylabel = "f (Hz)";
   fig.legend_outside = true;
@@ -79,7 +86,8 @@ Figure diagram(const StabilityConfig& c, const StabilityGrid& grid, int law) {
     for (std::size_t j = 0; j < NG; ++j) {
       const LayerVerdict& v = grid.at(law, i, j);
       const double x = c.gammas[j], y = c.frequencies[i];
-      const auto st = std::find(kLayerStates.begin(), kLayerStates.end(), v.state.value);
+      const auto st =
+          std::find(kLayerStates.begin(), kLayerStates.end(), v.stateBy(criterion).value);
       if (v.classified() && st != kLayerStates.end())
         sx[st - kLayerStates.begin()].push_back(x), sy[st - kLayerStates.begin()].push_back(y);
       if (v.classified() && v.surface_wave.value) wx.push_back(x), wy.push_back(y);
@@ -107,13 +115,18 @@ Figure differences(const StabilityConfig& c, const StabilityGrid& grid) {
   diff.xlabel = "Gamma";
   diff.ylabel = "f (Hz)";
   diff.legend_outside = true;
-  std::vector<double> dx, dy, qx, qy;
+  std::vector<double> dx, dy, qx, qy, wx, wy;
+  const double dg = 0.15 * spacing(c.gammas);
   for (std::size_t i = 0; i < c.frequencies.size(); ++i)
     for (std::size_t j = 0; j < c.gammas.size(); ++j) {
       if (grid.symbolsDiffer(i, j)) dx.push_back(c.gammas[j]), dy.push_back(c.frequencies[i]);
+      if (grid.symbolsDiffer(i, j, SolidCriterion::within_cycle))
+        wx.push_back(c.gammas[j] + dg), wy.push_back(c.frequencies[i]);
       if (grid.periodsDiffer(i, j)) qx.push_back(c.gammas[j]), qy.push_back(c.frequencies[i]);
     }
-  diff.series.push_back(points(dx, dy, "state, waves or kinks differ", "purple", "D"));
+  diff.series.push_back(points(dx, dy, "state (bonds), waves or kinks differ", "purple", "D"));
+  diff.series.push_back(
+      points(wx, wy, "state (within one cycle), waves or kinks differ", "tab:cyan", "o"));
   diff.series.push_back(points(qx, qy, "period differs", "black", "+"));
   return diff;
 }
@@ -124,8 +137,10 @@ Table everyPoint(const StabilityConfig& c, const StabilityResults& r) {
   t.caption =
       "Particles: the most frequent state and period over the seeds with their votes, the mean "
       "<|psi6|> and bonds kept (over the 15 cycles, which decides, and from one cycle to the "
-      "next, reported) over the classified seeds, and how many seeds show surface waves "
-      "or kinks. Hydro: one run per point (the continuum has no seed).";
+      "next, reported) over the classified seeds; the state within one cycle with the mean "
+      "neighbour count and <|psi6|> at each cycle's most compact phase, and the particles "
+      "pressed against the lid (within 0.1 d) at the fullest phase of a cycle; how many seeds "
+      "show surface waves or kinks. Hydro: one run per point (the continuum has no seed).";
   t.columns = {"f (Hz)",    "Gamma",     "dry (particles)", "wet (particles)",
                "hydro dry", "hydro wet", "hydro rough dry", "hydro rough wet"};
   const std::size_t NG = c.gammas.size();
@@ -140,15 +155,106 @@ Table everyPoint(const StabilityConfig& c, const StabilityResults& r) {
   return t;
 }
 
+// One line per law against Gamma at frequency index i0: `value` of the classified verdicts.
+template <class Value>
+void lawLines(Figure& fig, const StabilityGrid& grid, std::size_t i0, const std::string& what,
+              const std::string& linestyle, const Value& value) {
+  const char* color[2] = {"tab:red", "tab:blue"};
+  for (int law = 0; law < kLaws; ++law) {
+    std::vector<double> x, y;
+    for (std::size_t j = 0; j < grid.gammas.size(); ++j) {
+      const LayerVerdict& v = grid.at(law, i0, j);
+      if (!v.classified()) continue;
+      x.push_back(grid.gammas[j]);
+      y.push_back(value(v));
+    }
+    Series sr = lineSeries(x, y, std::string(kLawNames[law]) + what, color[law]);
+    sr.marker = linestyle == "-" ? "o" : "s";
+    sr.linestyle = linestyle;
+    fig.series.push_back(sr);
+  }
+}
+
+// The within-cycle criterion's two numbers at each cycle's most compact phase.
+Figure compactPhaseFigure(const StabilityGrid& grid, std::size_t i0) {
+  Figure fig;
+  fig.title = fmt::format("Within one cycle against Gamma at f = {:g} Hz", grid.frequencies[i0]);
+  fig.caption =
+      "At each cycle's most compact sampled phase, mean over cycles and classified seeds: "
+      "neighbours within 1.2 d per particle (solid lines; at least 4, the isostatic count of "
+      "disks, for a caged layer) and <|psi6|> (dashed; above 0.7 a crystal).";
+  fig.xlabel = "Gamma";
+  fig.ylabel = "neighbours; <|psi6|>";
+  lawLines(fig, grid, i0, ", neighbours", "-",
+           [](const LayerVerdict& v) { return v.within_cycle_coordination; });
+  lawLines(fig, grid, i0, ", <|psi6|>", "--",
+           [](const LayerVerdict& v) { return v.within_cycle_psi6; });
+  fig.series.push_back(horizontalLine(4.0, "caged from here (neighbours)", 0, "black"));
+  fig.series.push_back(horizontalLine(0.7, "crystal from here (psi6)", 0, "grey"));
+  fig.legend_outside = true;
+  return fig;
+}
+
+Figure lidFigure(const StabilityGrid& grid, std::size_t i0) {
+  Figure fig;
+  fig.title = fmt::format("Particles pressed against the lid at f = {:g} Hz", grid.frequencies[i0]);
+  fig.caption =
+      "Particles whose top is within 0.1 d of the lid at the fullest sampled phase of a cycle "
+      "(10 phases per cycle), mean over the last 16 cycles and the classified seeds. In the "
+      "paper's "
+      "box, 30 d wide, about 30 particles make a full row.";
+  fig.xlabel = "Gamma";
+  fig.ylabel = "particles on the lid";
+  lawLines(fig, grid, i0, "", "-", [](const LayerVerdict& v) { return v.lid_row; });
+  return fig;
+}
+
+// The dry-wet difference count per frequency, by each solid criterion, with its spread over
+// the seed resamples.
+Table differencesTable(const StabilityResults& r) {
+  Table t;
+  t.title = "Dry-wet differences per frequency, and over seed resamples";
+  t.caption =
+      "Points where dry and wet differ in state, surface waves or kinks: on the grid (most "
+      "frequent verdicts), and mean ± standard deviation over the bootstrap resamples of the "
+      "seeds, with the state by each solid criterion.";
+  t.columns = {"f (Hz)", "state by bonds", "resamples", "state within one cycle", "resamples"};
+  const SeedBootstrap& b = r.bootstrap;
+  for (std::size_t i = 0; i < r.grid.frequencies.size(); ++i) {
+    std::vector<std::string> row{formatCompact(r.grid.frequencies[i])};
+    const double* grid_count[2] = {&r.symbol_differences[i], &r.symbol_differences_within_cycle[i]};
+    for (int c = 0; c < 2; ++c) {
+      row.push_back(formatCompact(*grid_count[c]));
+      row.push_back(
+          b.differences_mean[c].size() > i
+              ? fmt::format("{:.2f} ± {:.2f}", b.differences_mean[c][i], b.differences_std[c][i])
+              : std::string("–"));
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
 void featuresSection(const StabilityResults& r, ReportSection& section) {
   const StabilityGrid& grid = r.grid;
   Table t;
   t.title = "Paper against particles";
-  t.caption =
-      "States are the most frequent over the seeds, with the number of seeds that gave them.";
-  t.columns = {"feature (paper)", "particles (this grid)", "reproduced"};
-  for (const FeatureCheck& c : r.features) t.rows.push_back({c.feature, c.observed, c.verdict});
+  t.caption = fmt::format(
+      "States are the most frequent over the seeds, with the number of seeds that gave them. "
+      "Stability: the share of {} bootstrap resamples of the seeds (drawn with replacement, "
+      "voted again) that give the same verdict; near 100 % no choice of seeds changes it, "
+      "near 50 % it is a coin flip.",
+      r.bootstrap.resamples);
+  t.columns = {"feature (paper)", "particles (this grid)", "reproduced", "stability over seeds"};
+  for (const FeatureCheck& c : r.features) {
+    const auto it = r.bootstrap.verdict_agreement.find(c.key);
+    t.rows.push_back({c.feature, c.observed, c.verdict,
+                      it == r.bootstrap.verdict_agreement.end()
+                          ? std::string("–")
+                          : fmt::format("{:.0f} %", 100 * it->second)});
+  }
   section.add(std::move(t));
+  section.add(differencesTable(r));
 
   // Caging against Gamma at the lowest f: does the layer solidify again, over the 15 cycles
   // that decide or over one cycle (closer to the paper's look at one free flight)?
@@ -181,6 +287,9 @@ void featuresSection(const StabilityResults& r, ReportSection& section) {
   }
   fig.series.push_back(horizontalLine(0.5, "caged from here (15 cycles)", 0, "black"));
   section.add(std::move(fig));
+
+  section.add(compactPhaseFigure(grid, i0));
+  section.add(lidFigure(grid, i0));
 
   // Wet surface waves where the dry layer has none, at the lowest f: the reverse of the paper.
   bool reversed = false;
@@ -229,7 +338,12 @@ std::string method(const StabilityConfig& c) {
       "Each (f, Gamma) point is {} particle run(s) of {:g} cycles (seeds {}), each classified "
       "live over its last 16 cycles at the free-flight phase (docs/classification.md): "
       "crystal / amorphous / liquid-like from the hexatic order and the bonds kept over 15 "
-      "cycles, standing surface waves, kinks, and the centre-of-mass period. A point's label "
+      "cycles, standing surface waves, kinks, and the centre-of-mass period; and a second "
+      "state, each of the 16 cycles judged on its own at its most compact sampled phase "
+      "(liquid-like below 4 neighbours within 1.2 d per particle, else crystal above <|psi6|> "
+      "0.7, else amorphous; the most frequent over the cycles), closer to the paper's "
+      "inspection of one flight. Both criteria give the known state of equilibrium hard disks "
+      "away from freezing (docs/classification.md). A point's label "
       "is the most frequent over its seeds (ties: the first seed listed). Markers: squares "
       "coloured by state; red triangles: surface waves; black crosses: kinks; a black dot: "
       "period 2 or more. A layer is caged (crystal or amorphous) when it keeps at least half "
@@ -271,8 +385,10 @@ std::string continuumAgreement(const StabilityConfig& c, const StabilityResults&
 }
 
 std::string summary(const StabilityConfig& c, const StabilityResults& r) {
-  std::string per_f, period_per_f;
+  std::string per_f, period_per_f, within_per_f;
   for (std::size_t i = 0; i < c.frequencies.size(); ++i) {
+    within_per_f += fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c.frequencies[i],
+                                r.symbol_differences_within_cycle[i]);
     per_f +=
         fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c.frequencies[i], r.symbol_differences[i]);
     period_per_f +=
@@ -280,17 +396,18 @@ std::string summary(const StabilityConfig& c, const StabilityResults& r) {
   }
   return fmt::format(
       "{} grid points per law (f = {:g} to {:g} Hz, Gamma = {:g} to {:g}), {} seed(s) each. "
-      "Points where dry and wet differ in state, surface waves or kinks, per frequency: {}; in "
-      "the period: {}.",
+      "Points where dry and wet differ in state, surface waves or kinks, per frequency: {} "
+      "(state within one cycle: {}); in the period: {}.",
       c.frequencies.size() * c.gammas.size(), c.frequencies.front(), c.frequencies.back(),
-      c.gammas.front(), c.gammas.back(), c.seeds.size(), per_f, period_per_f);
+      c.gammas.front(), c.gammas.back(), c.seeds.size(), per_f, within_per_f, period_per_f);
 }
 
 }  // namespace
 
 void reportStability(const StabilityConfig& c, const StabilityResults& r, Report& report) {
   ReportSection& s = report.section("Stability diagrams", method(c));
-  for (int law = 0; law < kLaws; ++law) s.add(diagram(c, r.grid, law));
+  for (SolidCriterion criterion : kSolidCriteria)
+    for (int law = 0; law < kLaws; ++law) s.add(diagram(c, r.grid, law, criterion));
   s.add(differences(c, r.grid));
   ReportSection& q = report.section(
       "The paper's features, point by point",
@@ -299,7 +416,8 @@ void reportStability(const StabilityConfig& c, const StabilityResults& r, Report
       "and the wet one does not; at Gamma ~ 5 both crystallize again as f rises; the dry-wet "
       "differences shrink as f rises. The first three are checked at the grid's lowest "
       "frequency. A difference is one in the paper's symbols (state, surface waves, kinks); "
-      "the periods are compared separately.");
+      "the periods are compared separately. Every check involving the state is made with each "
+      "solid criterion.");
   featuresSection(r, q);
   s.add(everyPoint(c, r));
   if (c.hydro)

@@ -29,7 +29,7 @@ class FieldsCli : public ::testing::Test {
     fs::create_directories(dir_);
     std::ofstream(dir_ / "wet.toml") << "[contact]\nrestitution = \"wet\"\n[run]\nduration = 4\n";
     ASSERT_EQ(std::system(("cd '" + dir_.string() +
-                           "' && '" GRANWAVE_BINARY "' simulate -q wet.toml -o wet.h5 > /dev/null")
+                           "' && '" GRANWAVE_BINARY "' simulate -q wet.toml -o wet.h5 > simulate.txt")
                               .c_str()),
               0);
   }
@@ -60,6 +60,24 @@ class FieldsCli : public ::testing::Test {
 fs::path FieldsCli::dir_;
 
 }  // namespace
+
+// One period detector for every command (issue 15): `fields` reports the period `simulate`
+// reported for the same run, whatever window it averages over.
+TEST_F(FieldsCli, GivesTheRunThePeriodSimulateGaveIt) {
+  const std::string sim = slurp(dir_ / "simulate.txt");
+  const auto at = sim.find("centre of mass  period ");
+  ASSERT_NE(at, std::string::npos) << sim;
+  const std::string period = sim.substr(at + 23, sim.find('T', at + 23) - (at + 23));
+  for (const std::string discard : {"", " --discard 5", " --discard 20"}) {
+    const Result r = run("fields wet.h5 -o f.h5" + discard);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("layer period    " + period + "T"), std::string::npos)
+        << "simulate: " << period << "T; fields" << discard << ":\n" << r.out;
+    EXPECT_NE(r.out.find("period-2 state  "), std::string::npos) << r.out;
+    fs::remove(dir_ / "f.h5");
+    fs::remove(dir_ / "f.xdmf");
+  }
+}
 
 TEST_F(FieldsCli, WritesFieldsFileWithGridProfilesFrontsAndSidecar) {
   const Result r = run("fields wet.h5 -o f.h5 --period 2");

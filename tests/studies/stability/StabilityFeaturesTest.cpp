@@ -16,6 +16,7 @@ LayerVerdict verdict(const std::string& state, bool wave = false, int period = 1
   LayerPatterns p;
   p.available = true;
   p.state = state;
+  p.within_cycle_state = state;
   p.period = period;
   p.surface_wave = wave;
   return voteOverSeeds({p}, {true}, {""});
@@ -127,6 +128,29 @@ TEST(StabilityFeatures, DifferencesCountThePaperSymbolsNotThePeriod) {
   EXPECT_EQ(g.periodDifferencesPerFrequency(), (std::vector<double>{5, 5}));
   // No difference at the lowest f: nothing to shrink.
   EXPECT_EQ(verdicts(g).at("differences_shrink_with_f"), "no");
+}
+
+// The layer the issue describes at 10 Hz, Gamma = 6-7: liquid-like by the bonds over 15 cycles,
+// ordered and compact in every cycle. Each criterion answers its own checks.
+TEST(StabilityFeatures, EachSolidCriterionAnswersTheStateChecksOnItsOwn) {
+  const std::vector<std::string> states[2][2] = {{{C, L, L, L, L}, {C, C, C, C, C}},
+                                                 {{C, L, L, L, L}, {C, C, C, C, C}}};
+  const std::vector<double> waves[2] = {{}, {}};
+  StabilityGrid g = grid(kF, kGamma, states, waves);
+  for (int law = 0; law < 2; ++law) {
+    LayerPatterns p;
+    p.available = true;
+    p.state = L;
+    p.within_cycle_state = C;
+    p.period = 1;
+    g.verdicts[law][4] = voteOverSeeds({p}, {true}, {""});  // 10 Hz, Gamma = 6
+  }
+  const auto v = verdicts(g);
+  EXPECT_EQ(v.at("dry_solid_again"), "no");
+  EXPECT_EQ(v.at("wet_solid_again"), "no");
+  EXPECT_EQ(v.at("dry_solid_again_within_cycle"), "yes");
+  EXPECT_EQ(v.at("wet_solid_again_within_cycle"), "yes");
+  EXPECT_EQ(g.at(0, 0, 4).stateBy(SolidCriterion::within_cycle).value, C);
 }
 
 }  // namespace

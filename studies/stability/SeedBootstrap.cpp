@@ -1,0 +1,75 @@
+#include "studies/stability/SeedBootstrap.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "studies/stability/StabilityFeatures.hpp"
+
+namespace granwave {
+
+namespace {
+
+// The grid voted again from the seeds `draw` (indices into each point's seeds).
+StabilityGrid revote(const StabilityGrid& grid, const SeedPatterns& s,
+                     const std::vector<std::size_t>& draw) {
+  StabilityGrid g;
+  g.frequencies = grid.frequencies;
+  g.gammas = grid.gammas;
+  for (int law = 0; law < 2; ++law)
+    for (std::size_t p = 0; p < s.patterns[law].size(); ++p) {
+      std::vector<LayerPatterns> patterns;
+      std::vector<bool> finished;
+      std::vector<std::string> messages;
+      for (std::size_t k : draw) {
+        patterns.push_back(s.patterns[law][p][k]);
+        finished.push_back(s.finished[law][p][k]);
+        messages.push_back(s.messages[law][p][k]);
+      }
+      g.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+    }
+  return g;
+}
+
+}  // namespace
+
+SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& s, int resamples) {
+  SeedBootstrap b;
+  b.resamples = resamples;
+  const std::size_t seeds =
+      s.patterns[0].empty() || s.patterns[0].front().empty() ? 0 : s.patterns[0].front().size();
+  if (seeds == 0 || resamples <= 0) return b;
+  std::vector<std::size_t> all(seeds);
+  for (std::size_t k = 0; k < seeds; ++k) all[k] = k;
+  std::map<std::string, std::string> reference;
+  for (const FeatureCheck& c : checkPaperFeatures(revote(grid, s, all)))
+    reference[c.key] = c.verdict;
+
+  const std::size_t NF = grid.frequencies.size();
+  std::vector<double> sum[2], sum2[2];
+  for (int c = 0; c < 2; ++c) sum[c].assign(NF, 0), sum2[c].assign(NF, 0);
+  std::mt19937_64 rng(20150415);
+  for (int r = 0; r < resamples; ++r) {
+    std::vector<std::size_t> draw(seeds);
+    for (std::size_t& k : draw) k = static_cast<std::size_t>(rng() % seeds);
+    const StabilityGrid g = revote(grid, s, draw);
+    for (const FeatureCheck& c : checkPaperFeatures(g))
+      b.verdict_agreement[c.key] += c.verdict == reference[c.key] ? 1.0 : 0.0;
+    for (int c = 0; c < 2; ++c) {
+      const std::vector<double> n = g.symbolDifferencesPerFrequency(kSolidCriteria[c]);
+      for (std::size_t i = 0; i < NF; ++i) sum[c][i] += n[i], sum2[c][i] += n[i] * n[i];
+    }
+  }
+  for (int c = 0; c < 2; ++c)
+    for (std::size_t i = 0; i < NF; ++i) {
+      const double mean = sum[c][i] / resamples;
+      b.differences_mean[c].push_back(mean);
+      b.differences_std[c].push_back(
+          std::sqrt(std::max(0.0, sum2[c][i] / resamples - mean * mean)));
+    }
+  for (const auto& [key, verdict] : reference) b.verdict_agreement.try_emplace(key, 0.0);
+  for (auto& [key, agreeing] : b.verdict_agreement) agreeing /= resamples;
+  return b;
+}
+
+}  // namespace granwave

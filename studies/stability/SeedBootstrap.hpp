@@ -1,0 +1,44 @@
+#pragma once
+// How stable the stability study's verdicts are against the choice of seeds: a bootstrap over
+// seeds (Efron & Tibshirani, "An Introduction to the Bootstrap", 1993, ch. 6).
+//
+// The verdict at a point is the most frequent over its seeds (SeedVote.hpp), and the paper's
+// features and the dry-wet difference counts are read from those verdicts. Each resample
+// draws as many seeds as the study ran, with replacement, from the seeds it ran (the same
+// draw at every point and for both laws, as a seed is one whole sweep), votes again, and
+// checks the features again. Reported: for each feature, the share of resamples whose
+// verdict equals the full grid's (1: no seed choice changes it; near 1/2: a coin flip), and
+// for each frequency the dry-wet difference count, its mean and standard deviation over the
+// resamples, for each solid criterion. With one seed every resample is the grid itself.
+// The draw is a fixed 64-bit Mersenne Twister sequence (index = draw mod seeds), so the
+// bootstrap is the same on every build.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "studies/run_files/RunOutputs.hpp"
+#include "studies/stability/StabilityGrid.hpp"
+
+namespace granwave {
+
+// Every seed's classification at every point: [law][point][seed], with whether its run
+// finished and the run's message (voteOverSeeds' inputs).
+struct SeedPatterns {
+  std::vector<std::vector<LayerPatterns>> patterns[2];
+  std::vector<std::vector<bool>> finished[2];
+  std::vector<std::vector<std::string>> messages[2];
+};
+
+struct SeedBootstrap {
+  int resamples = 0;
+  // Feature key -> share of resamples with the full grid's verdict.
+  std::map<std::string, double> verdict_agreement;
+  // [criterion][frequency]: the dry-wet difference count over the resamples.
+  std::vector<double> differences_mean[2], differences_std[2];
+};
+
+// `grid`: the full grid's frequencies and Gamma values (its verdicts are not used).
+SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& seeds,
+                                 int resamples = 200);
+
+}  // namespace granwave
