@@ -81,7 +81,10 @@ void Checker::singleKeys() const {
   if (s_.drive.gamma) nonNegative("drive.gamma", *s_.drive.gamma, "peak acceleration / g");
   if (s_.drive.amplitude) nonNegative("drive.amplitude", *s_.drive.amplitude, "m");
   within("contact.e", c.e, '[', 0.0, 1.0, ']');
-  nonNegative("contact.kappa", c.kappa, "(s/m)^(1/5)");
+  nonNegative("contact.kappa", c.kappa, "dimensionless in the unit of contact.kappa_units");
+  if (c.kappa_units == KappaUnits::GravityDiameter && !(s_.run.gravity > 0))
+    fail("contact.kappa_units", "\"gd\"",
+         "the unit sqrt(g d) needs run.gravity > 0; use \"si\" or \"cgs\"");
   within("contact.e_inf", c.e_inf, '(', 0.0, 1.0, ']');
   nonNegative("contact.stokes_critical", c.stokes_critical, "dimensionless");
   positive("contact.viscosity", c.viscosity, "Pa s");
