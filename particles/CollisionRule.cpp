@@ -29,15 +29,18 @@ struct ContactImpulse {
 // tangential parts of the contact-point relative velocity v_r; m_eff = m/2 for two equal
 // spheres, m against a wall (paper Eq. 3 and its wall form).
 ContactImpulse contactImpulse(Vec2 n, Vec2 vr, double m_eff, double e_n, const TangentialLaw& law,
-                              bool rough) {
+                              TangentialRule rule) {
   const double vrn = vr.x * n.x + vr.z * n.z;  // < 0 when approaching
   const Vec2 vn{vrn * n.x, vrn * n.z};
   const Vec2 vt{vr.x - vn.x, vr.z - vn.z};
   ContactImpulse c;
   c.vn = -vrn;
-  const bool tangential = rough && law.friction > 0.0;
-  if (tangential)
+  const bool coulomb = rule == TangentialRule::Coulomb && law.friction > 0.0;
+  const bool tangential = coulomb || rule == TangentialRule::RoughElastic;
+  if (coulomb)
     c.e_t = tangentialRestitution(law, e_n, std::abs(vrn), std::sqrt(vt.x * vt.x + vt.z * vt.z));
+  else if (rule == TangentialRule::RoughElastic)
+    c.e_t = 1.0;  // v_t' = -v_t (Luding's e_t = +1)
   const double cn = -(1.0 + e_n) * m_eff;
   const double ct = tangential ? -kBeta * (1.0 + c.e_t) * m_eff : 0.0;
   c.dp = {cn * vn.x + ct * vt.x, cn * vn.z + ct * vt.z};
@@ -53,11 +56,12 @@ double spinChange(Vec2 n, Vec2 dp, double mass, double diameter) {
 }  // namespace
 
 PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, double mass,
-                                double diameter, double e_n, const TangentialLaw& law, bool rough) {
+                                double diameter, double e_n, const TangentialLaw& law,
+                                TangentialRule rule) {
   const double half_d = 0.5 * diameter;
   const double ws = w1 + w2;
   const Vec2 vr{v1.x - v2.x - half_d * ws * n.z, v1.z - v2.z + half_d * ws * n.x};
-  const ContactImpulse c = contactImpulse(n, vr, 0.5 * mass, e_n, law, rough);
+  const ContactImpulse c = contactImpulse(n, vr, 0.5 * mass, e_n, law, rule);
   PairCollisionResult r;
   r.vn = c.vn;
   r.e_t = c.e_t;
@@ -71,10 +75,10 @@ PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, 
 }
 
 WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass, double diameter,
-                                double e_n, const TangentialLaw& law, bool rough) {
+                                double e_n, const TangentialLaw& law, TangentialRule rule) {
   const double half_d = 0.5 * diameter;
   const Vec2 vr{v.x - v_wall.x - half_d * w * n.z, v.z - v_wall.z + half_d * w * n.x};
-  const ContactImpulse c = contactImpulse(n, vr, mass, e_n, law, rough);
+  const ContactImpulse c = contactImpulse(n, vr, mass, e_n, law, rule);
   WallCollisionResult r;
   r.vn = c.vn;
   r.e_t = c.e_t;

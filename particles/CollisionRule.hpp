@@ -15,6 +15,12 @@ struct Vec2 {
   double x = 0, z = 0;
 };
 
+// Which tangential impulse a contact gets. Smooth: none (v_t' = v_t, e_t = -1). RoughElastic:
+// e_t = +1, the tangential contact velocity is reversed with no loss (with e_n = 1 the
+// collision conserves kinetic plus rotational energy). Coulomb: Luding's friction law below
+// (smooth when mu = 0).
+enum class TangentialRule { Smooth, RoughElastic, Coulomb };
+
 struct TangentialLaw {
   double friction = 0;          // mu; 0 = smooth contact, no tangential impulse
   double tangential_limit = 0;  // e_t0
@@ -35,10 +41,11 @@ struct PairCollisionResult {
   double e_t = -1;        // tangential restitution used
 };
 
-// e_n already evaluated by the caller (it depends on vn, the law and the TC rule).
-// `rough` = false forces a smooth contact (e_t = -1), as the TC model requires.
+// e_n already evaluated by the caller (it depends on vn, the law and the TC rule); `rule`
+// chooses the tangential impulse (the TC model and the walls have their own).
 PairCollisionResult collidePair(Vec2 n, Vec2 v1, Vec2 v2, double w1, double w2, double mass,
-                                double diameter, double e_n, const TangentialLaw& law, bool rough);
+                                double diameter, double e_n, const TangentialLaw& law,
+                                TangentialRule rule);
 
 // Normal relative speed of an approaching pair (>= 0), from the same v_r as collidePair.
 double pairNormalSpeed(Vec2 n, Vec2 v1, Vec2 v2);
@@ -53,6 +60,6 @@ struct WallCollisionResult {
 
 // n points from the wall into the container; v_wall is the wall's velocity.
 WallCollisionResult collideWall(Vec2 n, Vec2 v, double w, Vec2 v_wall, double mass, double diameter,
-                                double e_n, const TangentialLaw& law, bool rough);
+                                double e_n, const TangentialLaw& law, TangentialRule rule);
 
 }  // namespace granwave

@@ -11,7 +11,7 @@
 namespace granwave {
 
 EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& init)
-    : cfg_(config), rotation_(config.tangential.friction > 0.0) {
+    : cfg_(config), rotation_(tracksSpin(config)) {
   const int n = init.size();
   setUp(n);
   const double d = cfg_.diameter;
@@ -64,7 +64,7 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
 }
 
 EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
-    : cfg_(config), rotation_(config.tangential.friction > 0.0) {
+    : cfg_(config), rotation_(tracksSpin(config)) {
   const int n = static_cast<int>(saved.particles.size());
   setUp(n);
   if (saved.events.size() != saved.particles.size())

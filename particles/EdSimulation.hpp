@@ -28,6 +28,12 @@ namespace granwave {
 
 struct Scene;
 
+// TC window (paper: "only the first collision of each particle within this time scale is
+// inelastic"): Rolling restarts a particle's t_c clock at every collision (Luding & McNamara
+// 1998); Anchored starts it at the first collision after the previous window closed, so a
+// particle has at most one dissipative collision per t_c.
+enum class TcWindowRule { Rolling, Anchored };
+
 // Everything the engine needs, resolved from a Scene (engineConfig) or set by tests.
 struct EngineConfig {
   double diameter = 0.002, mass = 1, gravity = 9.81;
@@ -36,7 +42,9 @@ struct EngineConfig {
   PlateMotion plate;
   Restitution restitution = Restitution::constant(1.0);
   TangentialLaw tangential;
-  bool rough_walls = false;
+  TangentialRule wall_tangential = TangentialRule::Smooth;  // walls (outside the TC time)
+  TangentialRule tc_tangential = TangentialRule::Smooth;    // collisions the TC model makes elastic
+  TcWindowRule tc_window = TcWindowRule::Rolling;
   double tc = 0;  // s; 0 = TC model off
   double rest_velocity = 1e-6;
   double duration = 1;  // s
@@ -53,6 +61,9 @@ struct EngineConfig {
 };
 
 EngineConfig engineConfig(const Scene& scene);
+
+// Whether any contact of this config can give a tangential impulse (so spins are tracked).
+bool tracksSpin(const EngineConfig& config);
 
 struct RunStatus {
   bool completed = false;    // reached the duration

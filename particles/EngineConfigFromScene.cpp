@@ -6,6 +6,27 @@
 
 namespace granwave {
 
+namespace {
+
+TangentialRule tangentialRule(ContactTangential t) {
+  switch (t) {
+    case ContactTangential::Smooth:
+      return TangentialRule::Smooth;
+    case ContactTangential::RoughElastic:
+      return TangentialRule::RoughElastic;
+    case ContactTangential::Coulomb:
+      return TangentialRule::Coulomb;
+  }
+  return TangentialRule::Smooth;
+}
+
+}  // namespace
+
+bool tracksSpin(const EngineConfig& c) {
+  return c.tangential.friction > 0.0 || c.wall_tangential == TangentialRule::RoughElastic ||
+         c.tc_tangential == TangentialRule::RoughElastic;
+}
+
 EngineConfig engineConfig(const Scene& scene) {
   const SceneDerived dv = derive(scene);
   EngineConfig c;
@@ -22,14 +43,17 @@ EngineConfig engineConfig(const Scene& scene) {
       c.restitution = Restitution::constant(scene.contact.e);
       break;
     case RestitutionKind::Dry:
-      c.restitution = Restitution::dry(scene.contact.kappa);
+      c.restitution = Restitution::dry(dv.kappa_si);
       break;
     case RestitutionKind::Wet:
       c.restitution = Restitution::wet(scene.contact.e_inf, scene.contact.stokes_critical, dv.q);
       break;
   }
   c.tangential = {scene.contact.friction, scene.contact.tangential_limit};
-  c.rough_walls = scene.contact.rough_walls;
+  c.wall_tangential = tangentialRule(scene.contact.wall_tangential);
+  c.tc_tangential = tangentialRule(scene.contact.tc_tangential);
+  c.tc_window = scene.contact.tc_window == TcWindow::Anchored ? TcWindowRule::Anchored
+                                                              : TcWindowRule::Rolling;
   c.tc = dv.tc;
   c.rest_velocity = scene.contact.rest_velocity;
   c.duration = scene.run.duration;

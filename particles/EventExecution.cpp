@@ -54,8 +54,9 @@ Vec2 EdSimulation::imageShiftTo(int i, int j) const {
 }
 
 bool EdSimulation::tcElastic(int i, int j) const {
-  // TC model (Luding & McNamara 1998): a collision is elastic if a partner collided within
-  // the last t_c. A wall (j < 0) is a partner with no memory.
+  // TC model (Luding & McNamara 1998): a collision is elastic if a partner's TC window
+  // (opened at its last collision, or its first one in the window when anchored) is open.
+  // A wall (j < 0) is a partner with no memory.
   if (cfg_.tc <= 0.0) return false;
   if (now_ - p_[i].last_collision < cfg_.tc) return true;
   return j >= 0 && now_ - p_[j].last_collision < cfg_.tc;
@@ -63,7 +64,10 @@ bool EdSimulation::tcElastic(int i, int j) const {
 
 void EdSimulation::noteCollision(int i, int partner) {
   ParticleState& s = p_[i];
-  s.last_collision = now_;
+  // last_collision opens the particle's TC window: at every collision (rolling), or only at
+  // the first one after the window closed (anchored).
+  if (cfg_.tc_window == TcWindowRule::Rolling || !(now_ - s.last_collision < cfg_.tc))
+    s.last_collision = now_;
   ++s.counter;
   if (now_ - s.burst_start > cfg_.collapse_window) {
     s.burst_start = now_;
@@ -187,8 +191,9 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
   const double before = particleEnergy(a) + particleEnergy(b);
   if (!elastic) bookImpact(vn, e_n);
-  const PairCollisionResult c = collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter,
-                                            e_n, cfg_.tangential, rotation_ && !elastic);
+  const PairCollisionResult c =
+      collidePair(n, va, vb, a.omega, b.omega, cfg_.mass, cfg_.diameter, e_n, cfg_.tangential,
+                  elastic ? cfg_.tc_tangential : TangentialRule::Coulomb);
   a.vx = c.v1.x;
   a.vz = c.v1.z;
   b.vx = c.v2.x;
@@ -289,7 +294,7 @@ void EdSimulation::doWall(int i, WallId wall) {
     const double e_n = elastic ? 1.0 : cfg_.restitution(approach);
     const WallCollisionResult c =
         collideWall(n, {s.vx, s.vz}, s.omega, vw, cfg_.mass, cfg_.diameter, e_n, cfg_.tangential,
-                    cfg_.rough_walls && rotation_ && !elastic);
+                    elastic ? cfg_.tc_tangential : cfg_.wall_tangential);
     // Loss in the wall's frame (the wall's own velocity is unchanged by the impact):
     // kinetic energy relative to the wall before minus after.
     const double m = cfg_.mass;

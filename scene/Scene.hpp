@@ -16,6 +16,16 @@ enum class HydroRestitutionModel { Constant, Velocity };
 enum class HydroTransport { JenkinsRichman, GarzoDufty };
 enum class HydroPairCorrelation { Luding, Henderson };
 enum class HydroParticles { Smooth, Rough };
+// The readings of the paper's "tangential COR set to 1" (walls) and "e_n = e_t = 1" (TC
+// collisions): smooth (tangential contact velocity kept), rough-elastic (reversed: Luding's
+// e_t = +1), or the particles' Coulomb friction law. docs/scenes.md, "Readings".
+enum class ContactTangential { Smooth, RoughElastic, Coulomb };
+// "Only the first collision of each particle within this time scale is inelastic": the TC
+// window restarts at every collision (rolling) or at the first collision after it closed
+// (anchored).
+enum class TcWindow { Rolling, Anchored };
+// The velocity unit u of the dry law e = 1 - kappa (v_n / u)^(1/5): 1 m/s, sqrt(g d), 1 cm/s.
+enum class KappaUnits { Si, GravityDiameter, Cgs };
 
 struct ParticlesSpec {
   int count = 300;
@@ -41,16 +51,19 @@ struct DriveSpec {
 
 struct ContactSpec {
   RestitutionKind restitution = RestitutionKind::Dry;
-  double e = 0.9;                  // constant law
-  double kappa = 0.1;              // dry law, (s/m)^(1/5)
+  double e = 0.9;      // constant law
+  double kappa = 0.1;  // dry law, in the unit kappa_units names
+  KappaUnits kappa_units = KappaUnits::Si;
   double e_inf = 0.91;             // wet law
   double stokes_critical = 40.0;   // wet law, St_c
   double viscosity = 1.0e-3;       // wet law, Pa s
   double friction = 0.5;           // mu; 0 switches rotation off
   double tangential_limit = 0.35;  // e_t0
-  bool rough_walls = false;
-  // "Set to 1" in the paper (walls, TC collisions) read as e_t = -1 (tangential relative
-  // velocity unchanged) in Luding's convention: see docs/physics.md.
+  // "Set to 1" in the paper (walls, TC collisions) read by default as e_t = -1 (tangential
+  // relative velocity unchanged) in Luding's convention: see docs/physics.md.
+  ContactTangential wall_tangential = ContactTangential::Smooth;
+  ContactTangential tc_tangential = ContactTangential::Smooth;
+  TcWindow tc_window = TcWindow::Rolling;
   bool tc_enabled = true;
   std::optional<double> tc_time;  // s; empty = paper's formula ("auto")
   // Below this separation speed after a wall collision, a particle pressed on by the wall

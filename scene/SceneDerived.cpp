@@ -9,6 +9,18 @@ double tcContactDuration(double mass, double hertz_k, double velocity) {
   return 2.94 * std::pow(mass / hertz_k, 0.4) * std::pow(velocity, -0.2);
 }
 
+double kappaVelocityUnit(KappaUnits units, double gravity, double diameter) {
+  switch (units) {
+    case KappaUnits::Si:
+      return 1.0;
+    case KappaUnits::GravityDiameter:
+      return std::sqrt(gravity * diameter);
+    case KappaUnits::Cgs:
+      return 0.01;
+  }
+  return 1.0;
+}
+
 SceneDerived derive(const Scene& s) {
   SceneDerived d;
   const double dia = s.particles.diameter;
@@ -44,6 +56,11 @@ SceneDerived derive(const Scene& s) {
   }
   d.q = s.particles.density * dia / (9.0 * s.contact.viscosity);
   d.v_c = s.contact.stokes_critical / d.q;
+  // e = 1 - kappa (v_n/u)^(1/5) = 1 - kappa u^(-1/5) v_n^(1/5); m/s is kept exact (default).
+  const KappaUnits ku = s.contact.kappa_units;
+  d.kappa_si = ku == KappaUnits::Si
+                   ? s.contact.kappa
+                   : s.contact.kappa * std::pow(kappaVelocityUnit(ku, g, dia), -0.2);
   return d;
 }
 

@@ -106,6 +106,32 @@ void readRestitution(Scene& s, const Entry& e) {
       e.choice<K>({{"constant", K::Constant}, {"dry", K::Dry}, {"wet", K::Wet}});
 }
 
+ContactTangential tangentialChoice(const Entry& e) {
+  using T = ContactTangential;
+  return e.choice<T>(
+      {{"smooth", T::Smooth}, {"rough-elastic", T::RoughElastic}, {"coulomb", T::Coulomb}});
+}
+
+void readWallTangential(Scene& s, const Entry& e) {
+  s.contact.wall_tangential = tangentialChoice(e);
+}
+void readTcTangential(Scene& s, const Entry& e) { s.contact.tc_tangential = tangentialChoice(e); }
+
+// Older key: true = the particles' friction law at the walls ("coulomb"), false = "smooth".
+void readRoughWalls(Scene& s, const Entry& e) {
+  s.contact.wall_tangential = e.boolean() ? ContactTangential::Coulomb : ContactTangential::Smooth;
+}
+
+void readTcWindow(Scene& s, const Entry& e) {
+  using W = TcWindow;
+  s.contact.tc_window = e.choice<W>({{"rolling", W::Rolling}, {"anchored", W::Anchored}});
+}
+
+void readKappaUnits(Scene& s, const Entry& e) {
+  using K = KappaUnits;
+  s.contact.kappa_units = e.choice<K>({{"si", K::Si}, {"gd", K::GravityDiameter}, {"cgs", K::Cgs}});
+}
+
 void readPlacement(Scene& s, const Entry& e) {
   using P = InitialPlacement;
   s.initial.placement = e.choice<P>({{"random", P::Random}, {"lattice", P::Lattice}});
@@ -179,13 +205,17 @@ const Field kFields[] = {
     {"contact", "restitution", readRestitution},
     {"contact", "e", number<kC, &CS::e>},
     {"contact", "kappa", number<kC, &CS::kappa>},
+    {"contact", "kappa_units", readKappaUnits},
     {"contact", "e_inf", number<kC, &CS::e_inf>},
     {"contact", "stokes_critical", number<kC, &CS::stokes_critical>},
     {"contact", "viscosity", number<kC, &CS::viscosity>},
     {"contact", "friction", number<kC, &CS::friction>},
     {"contact", "tangential_limit", number<kC, &CS::tangential_limit>},
-    {"contact", "rough_walls", boolean<kC, &CS::rough_walls>},
+    {"contact", "wall_tangential", readWallTangential},
+    {"contact", "rough_walls", readRoughWalls},
     {"contact", "tc", readTc},
+    {"contact", "tc_tangential", readTcTangential},
+    {"contact", "tc_window", readTcWindow},
     {"contact", "rest_velocity", number<kC, &CS::rest_velocity>},
     {"initial", "temperature", readTemperature},
     {"initial", "placement", readPlacement},

@@ -106,7 +106,10 @@ void Checker::singleKeys() const {
   if (s_.drive.gamma) zeroOrWithin("drive.gamma", *s_.drive.gamma, 1e-3, 100.0, "g");
   if (s_.drive.amplitude) nonNegative("drive.amplitude", *s_.drive.amplitude, "m");
   within("contact.e", c.e, '[', 0.0, 1.0, ']');
-  within("contact.kappa", c.kappa, '[', 0.0, 10.0, ']', "(s/m)^(1/5)");
+  within("contact.kappa", c.kappa, '[', 0.0, 10.0, ']', "in the unit of contact.kappa_units");
+  if (c.kappa_units == KappaUnits::GravityDiameter && !(s_.run.gravity > 0))
+    fail("contact.kappa_units", "\"gd\"",
+         "the unit sqrt(g d) needs run.gravity > 0; use \"si\" or \"cgs\"");
   within("contact.e_inf", c.e_inf, '(', 0.0, 1.0, ']');
   within("contact.stokes_critical", c.stokes_critical, '[', 0.0, 1e6, ']');
   within("contact.viscosity", c.viscosity, '[', 1e-6, 1e3, ']', "Pa s");

@@ -61,6 +61,15 @@ const char* name(RestitutionKind k) {
   return k == RestitutionKind::Constant ? "constant" : k == RestitutionKind::Dry ? "dry" : "wet";
 }
 
+const char* name(ContactTangential t) {
+  return t == ContactTangential::Smooth         ? "smooth"
+         : t == ContactTangential::RoughElastic ? "rough-elastic"
+                                                : "coulomb";
+}
+const char* name(KappaUnits k) {
+  return k == KappaUnits::Si ? "si" : k == KappaUnits::GravityDiameter ? "gd" : "cgs";
+}
+
 void writeDrive(TomlWriter& w, const DriveSpec& drive, const SceneDerived& d) {
   w.section("drive");
   w.key("frequency", drive.frequency, "Hz, f (0 = no drive)");
@@ -77,13 +86,17 @@ void writeContact(TomlWriter& w, const ContactSpec& c, const SceneDerived& d) {
   w.section("contact");
   w.key("restitution", quoted(name(c.restitution)), R"("constant" | "dry" | "wet")");
   w.key("e", c.e, "constant law");
-  w.key("kappa", c.kappa, "dry law, (s/m)^(1/5)");
+  w.key("kappa", c.kappa, "dry law: e = 1 - kappa (v_n/u)^(1/5)");
+  w.key("kappa_units", quoted(name(c.kappa_units)),
+        fmt::format(R"(u: "si" 1 m/s | "gd" sqrt(g d) | "cgs" 1 cm/s; kappa_SI = {:.6g})",
+                    d.kappa_si));
   w.key("e_inf", c.e_inf, "wet law");
   w.key("stokes_critical", c.stokes_critical, "wet law, St_c");
   w.key("viscosity", c.viscosity, "Pa s, eta");
   w.key("friction", c.friction, "mu (0 = no rotation)");
   w.key("tangential_limit", c.tangential_limit, "e_t0 (Luding: -1 smooth, +1 rough)");
-  w.key("rough_walls", c.rough_walls, "false: walls smooth (paper's e_t \"set to 1\")");
+  w.key("wall_tangential", quoted(name(c.wall_tangential)),
+        R"("smooth" | "rough-elastic" | "coulomb")");
   if (!c.tc_enabled) {
     w.key("tc", quoted("off"), R"("auto" | "off" | seconds)");
   } else if (c.tc_time) {
@@ -91,6 +104,10 @@ void writeContact(TomlWriter& w, const ContactSpec& c, const SceneDerived& d) {
   } else {
     w.key("tc", quoted("auto"), fmt::format("t_c = {:.4g} s", d.tc));
   }
+  w.key("tc_tangential", quoted(name(c.tc_tangential)),
+        R"(TC collisions: "smooth" | "rough-elastic" | "coulomb")");
+  w.key("tc_window", quoted(c.tc_window == TcWindow::Rolling ? "rolling" : "anchored"),
+        R"("rolling" | "anchored")");
   w.key("rest_velocity", c.rest_velocity, "m/s");
 }
 

@@ -65,7 +65,10 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
     r += fmt::format(" (e_inf = {:g}, St_c = {:g}, v_c = {:.4g} m/s)", s.contact.e_inf,
                      s.contact.stokes_critical, dv.v_c);
   if (s.contact.restitution == RestitutionKind::Dry)
-    r += fmt::format(" (kappa = {:g})", s.contact.kappa);
+    r += s.contact.kappa_units == KappaUnits::Si
+             ? fmt::format(" (kappa = {:g})", s.contact.kappa)
+             : fmt::format(" (kappa = {:g} in its unit, kappa_SI = {:.4g})", s.contact.kappa,
+                           dv.kappa_si);
   if (s.contact.restitution == RestitutionKind::Constant)
     r += fmt::format(" (e = {:g})", s.contact.e);
   r += fmt::format(", mu = {:g}\n", s.contact.friction);

@@ -2,6 +2,7 @@
 
 #include "studies/effective_restitution/EffectiveRestitutionStudy.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
+#include "studies/readings/ReadingsStudy.hpp"
 #include "studies/sound_speed/SoundSpeedStudy.hpp"
 #include "studies/stability/StabilityStudy.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
@@ -15,9 +16,10 @@ std::unique_ptr<Study> makeStudy(StudyFile& file) {
   if (kind == "sound-speed") return makeSoundSpeedStudy(file);
   if (kind == "stability") return makeStabilityStudy(file);
   if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
+  if (kind == "readings") return makeReadingsStudy(file);
   file.fail("study", "kind",
             "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
-            "momentum-transfer, stability");
+            "momentum-transfer, stability, readings");
 }
 
 }  // namespace granwave

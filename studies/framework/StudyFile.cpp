@@ -27,7 +27,7 @@ StudyFile StudyFile::load(const std::string& path) {
   if (f.kind_.empty())
     throw StudyError(
         fmt::format("{}: [study] kind is missing; valid kinds: wave-fronts, "
-                    "sound-speed, effective-restitution, momentum-transfer, stability",
+                    "sound-speed, effective-restitution, momentum-transfer, stability, readings",
                     path));
   return f;
 }

@@ -53,7 +53,7 @@ hydro::RestitutionClosure restitutionClosure(const Scene& s) {
       s.contact.restitution == RestitutionKind::Constant)
     return hydro::RestitutionClosure::constant(s.contact.e);
   if (s.contact.restitution == RestitutionKind::Dry)
-    return hydro::RestitutionClosure::dry(s.contact.kappa);
+    return hydro::RestitutionClosure::dry(derive(s).kappa_si);
   return hydro::RestitutionClosure::wet(s.contact.e_inf, derive(s).v_c);
 }
 

@@ -156,6 +156,7 @@ RunObservables readRunObservables(const std::string& path) {
   }
   if (coll.size() >= 4) {
     r.pair_collisions = coll[coll.size() - 4];
+    r.wall_collisions = coll[coll.size() - 3];
     r.tc_elastic = coll[coll.size() - 2];
   }
   return r;

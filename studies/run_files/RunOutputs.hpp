@@ -52,6 +52,7 @@ struct RunObservables {
   std::vector<double> pair_impact_energy, pair_impact_loss;       // cumulative, J
   std::vector<double> pair_count, tc_elastic_count;               // cumulative, per record
   std::uint64_t events = 0, pair_collisions = 0, tc_elastic = 0;  // at the end
+  std::uint64_t wall_collisions = 0;                              // at the end
 };
 
 // The live classification of a particle run (FIELDS.h5 /patterns, docs/classification.md).

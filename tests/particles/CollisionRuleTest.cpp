@@ -28,7 +28,7 @@ TEST(CollisionRule, HeadOnSmoothCollisionLosesOneMinusESquaredOfRelativeEnergy) 
   const Vec2 n{1, 0};
   const Vec2 v1{-1.0, 0}, v2{1.0, 0};
   const double e = 0.8;
-  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, e, {}, false);
+  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, e, {}, TangentialRule::Smooth);
   EXPECT_NEAR(r.v1.x, 0.8, 1e-15);
   EXPECT_NEAR(r.v2.x, -0.8, 1e-15);
   EXPECT_NEAR(r.v1.x + r.v2.x, 0.0, 1e-15);
@@ -41,7 +41,7 @@ TEST(CollisionRule, NormalRestitutionAndMomentumHoldForObliqueRoughCollision) {
   const Vec2 v1{-0.7, 0.2}, v2{0.4, -0.5};
   const double w1 = 30.0, w2 = -12.0, e = 0.85;
   const TangentialLaw law{0.5, 0.35};
-  const auto r = collidePair(n, v1, v2, w1, w2, kM, kD, e, law, true);
+  const auto r = collidePair(n, v1, v2, w1, w2, kM, kD, e, law, TangentialRule::Coulomb);
   const Vec2 vr = contactVelocity(v1, v2, w1, w2, n);
   const Vec2 vr2 = contactVelocity(r.v1, r.v2, r.w1, r.w2, n);
   EXPECT_NEAR(-dot(vr2, n) / dot(vr, n), e, 1e-12);
@@ -66,7 +66,7 @@ TEST(CollisionRule, SlidingBranchHasCoulombLimitedTangentialImpulse) {
   const Vec2 v1{1.0, -0.1}, v2{0, 0};
   const TangentialLaw law{0.5, 0.35};
   const double e = 0.9;
-  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, e, law, true);
+  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, e, law, TangentialRule::Coulomb);
   const double expected_et = -1.0 + 0.5 * 1.9 * (0.1 / 1.0) / kBeta;
   EXPECT_NEAR(r.e_t, expected_et, 1e-12);
   EXPECT_LT(r.e_t, 0.35);
@@ -81,7 +81,7 @@ TEST(CollisionRule, StickingBranchUsesLimitingTangentialRestitution) {
   const Vec2 n{0, 1};
   const Vec2 v1{0.05, -1.0}, v2{0, 0};
   const TangentialLaw law{0.5, 0.35};
-  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, 0.9, law, true);
+  const auto r = collidePair(n, v1, v2, 0, 0, kM, kD, 0.9, law, TangentialRule::Coulomb);
   EXPECT_DOUBLE_EQ(r.e_t, 0.35);
   const Vec2 vr2 = contactVelocity(r.v1, r.v2, r.w1, r.w2, n);
   EXPECT_NEAR(vr2.x, -0.35 * 0.05, 1e-14);
@@ -92,7 +92,8 @@ TEST(CollisionRule, ZeroFrictionOrSmoothFlagLeavesSpinAndTangentialVelocity) {
   const Vec2 v1{0.3, -0.9}, v2{-0.2, 0.1};
   for (bool rough : {false, true}) {
     const TangentialLaw law{rough ? 0.0 : 0.5, 0.35};
-    const auto r = collidePair(n, v1, v2, 5.0, -3.0, kM, kD, 0.9, law, rough);
+    const auto r = collidePair(n, v1, v2, 5.0, -3.0, kM, kD, 0.9, law,
+                               rough ? TangentialRule::Coulomb : TangentialRule::Smooth);
     EXPECT_DOUBLE_EQ(r.w1, 5.0);
     EXPECT_DOUBLE_EQ(r.w2, -3.0);
     EXPECT_DOUBLE_EQ(r.e_t, -1.0);
@@ -105,7 +106,8 @@ TEST(CollisionRule, PerfectlyRoughElasticCollisionConservesEnergy) {
   // e_n = 1 and e_t = +1 (e_t0 = 1, large mu): no dissipation at all (Luding 1995).
   const Vec2 n{std::cos(1.1), std::sin(1.1)};
   const Vec2 v1{0.3, -0.9}, v2{-0.2, 0.1};
-  const auto r = collidePair(n, v1, v2, 7.0, 2.0, kM, kD, 1.0, {100.0, 1.0}, true);
+  const auto r =
+      collidePair(n, v1, v2, 7.0, 2.0, kM, kD, 1.0, {100.0, 1.0}, TangentialRule::Coulomb);
   EXPECT_DOUBLE_EQ(r.e_t, 1.0);
   EXPECT_NEAR(energy(r.v1, r.v2, r.w1, r.w2) / energy(v1, v2, 7.0, 2.0), 1.0, 1e-13);
 }
@@ -113,7 +115,8 @@ TEST(CollisionRule, PerfectlyRoughElasticCollisionConservesEnergy) {
 TEST(CollisionRule, WallCollisionUsesParticleMassAndWallVelocity) {
   // A particle hitting a plate moving up at 0.5 m/s: relative normal speed 1.5, and with
   // the wall as infinite mass the rebound is v' = u_w + e (u_w - v).
-  const auto r = collideWall({0, 1}, {0.2, -1.0}, 0, {0, 0.5}, kM, kD, 0.8, {}, false);
+  const auto r =
+      collideWall({0, 1}, {0.2, -1.0}, 0, {0, 0.5}, kM, kD, 0.8, {}, TangentialRule::Smooth);
   EXPECT_NEAR(r.vn, 1.5, 1e-15);
   EXPECT_NEAR(r.v.z, 0.5 + 0.8 * 1.5, 1e-15);
   EXPECT_DOUBLE_EQ(r.v.x, 0.2);
@@ -122,7 +125,8 @@ TEST(CollisionRule, WallCollisionUsesParticleMassAndWallVelocity) {
 
 TEST(CollisionRule, RoughWallTangentialRestitutionHoldsAtContactPoint) {
   const Vec2 n{0, 1};
-  const auto r = collideWall(n, {0.05, -1.0}, 3.0, {0, 0}, kM, kD, 0.9, {0.5, 0.35}, true);
+  const auto r =
+      collideWall(n, {0.05, -1.0}, 3.0, {0, 0}, kM, kD, 0.9, {0.5, 0.35}, TangentialRule::Coulomb);
   const double vt_before = 0.05 - 0.5 * kD * 3.0 * 1.0;  // v_x - (d/2) w n_z
   const double vt_after = r.v.x - 0.5 * kD * r.w;
   EXPECT_NEAR(vt_after / vt_before, -r.e_t, 1e-12);

@@ -51,7 +51,7 @@ TEST(WallContact, WetLayerStaysInsideContainerOverManyCycles) {
 
 TEST(WallContact, RoughWallsAndHighGammaKeepParticlesInside) {
   Scene s = test::paperScene(RestitutionKind::Dry, 2.0);
-  s.contact.rough_walls = true;
+  s.contact.wall_tangential = ContactTangential::Coulomb;
   s.drive.gamma = 7.0;  // the lid is hit too
   runContained(s);
 }

@@ -35,7 +35,10 @@ TEST(SceneDefaults, EqualThePapersTableIAndMethods) {
   EXPECT_DOUBLE_EQ(s.contact.viscosity, 1.0e-3);
   EXPECT_DOUBLE_EQ(s.contact.friction, 0.5);
   EXPECT_DOUBLE_EQ(s.contact.tangential_limit, 0.35);
-  EXPECT_FALSE(s.contact.rough_walls);
+  EXPECT_EQ(s.contact.wall_tangential, ContactTangential::Smooth);
+  EXPECT_EQ(s.contact.tc_tangential, ContactTangential::Smooth);
+  EXPECT_EQ(s.contact.tc_window, TcWindow::Rolling);
+  EXPECT_EQ(s.contact.kappa_units, KappaUnits::Si);
   EXPECT_TRUE(s.contact.tc_enabled);
   EXPECT_FALSE(s.contact.tc_time.has_value());
   EXPECT_FALSE(s.initial.temperature.has_value());
@@ -108,6 +111,19 @@ TEST(SceneDerived, UndrivenSceneWithoutTemperatureTakesTcFromSqrtGD) {
   s.drive.frequency = 0;
   const SceneDerived d = derive(s);
   EXPECT_NEAR(d.tc, tcContactDuration(d.mass, d.hertz_k, std::sqrt(9.81 * 0.002)), 1e-15);
+}
+
+TEST(SceneDerived, KappaReadingsGiveTheDryRestitutionAtOneMetrePerSecondOfIssue15) {
+  // e_dry(1 m/s) = 1 - kappa_SI for kappa = 0.1 read with v_n in m/s, in units of sqrt(g d)
+  // (g = 9.81, d = 2 mm: u = 0.1401 m/s) and in cm/s: 0.90, 0.852, 0.749 (kappa u^(-1/5)).
+  Scene s;
+  EXPECT_EQ(derive(s).kappa_si, 0.1);  // bit-identical default
+  s.contact.kappa_units = KappaUnits::GravityDiameter;
+  EXPECT_NEAR(derive(s).kappa_si, 0.1 * std::pow(std::sqrt(9.81 * 0.002), -0.2), 1e-15);
+  EXPECT_NEAR(1.0 - derive(s).kappa_si, 0.852, 0.0005);
+  s.contact.kappa_units = KappaUnits::Cgs;
+  EXPECT_NEAR(derive(s).kappa_si, 0.1 * std::pow(100.0, 0.2), 1e-15);
+  EXPECT_NEAR(1.0 - derive(s).kappa_si, 0.749, 0.0005);
 }
 
 }  // namespace

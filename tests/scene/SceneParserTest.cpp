@@ -35,7 +35,10 @@ void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.contact.viscosity, b.contact.viscosity);
   EXPECT_EQ(a.contact.friction, b.contact.friction);
   EXPECT_EQ(a.contact.tangential_limit, b.contact.tangential_limit);
-  EXPECT_EQ(a.contact.rough_walls, b.contact.rough_walls);
+  EXPECT_EQ(a.contact.kappa_units, b.contact.kappa_units);
+  EXPECT_EQ(a.contact.wall_tangential, b.contact.wall_tangential);
+  EXPECT_EQ(a.contact.tc_tangential, b.contact.tc_tangential);
+  EXPECT_EQ(a.contact.tc_window, b.contact.tc_window);
   EXPECT_EQ(a.contact.tc_enabled, b.contact.tc_enabled);
   EXPECT_EQ(a.contact.tc_time, b.contact.tc_time);
   EXPECT_EQ(a.contact.rest_velocity, b.contact.rest_velocity);
@@ -88,8 +91,11 @@ TEST(SceneParser, ReadsEveryKeyOfEverySection) {
     viscosity = 2e-3
     friction = 0.0
     tangential_limit = -1.0
-    rough_walls = true
+    kappa_units = "cgs"
+    wall_tangential = "rough-elastic"
     tc = 1e-5
+    tc_tangential = "coulomb"
+    tc_window = "anchored"
     rest_velocity = 1e-5
     [initial]
     temperature = 1e-7
@@ -114,7 +120,10 @@ TEST(SceneParser, ReadsEveryKeyOfEverySection) {
   EXPECT_FALSE(s.drive.gamma.has_value());
   EXPECT_EQ(s.contact.restitution, RestitutionKind::Constant);
   EXPECT_EQ(s.contact.tangential_limit, -1.0);
-  EXPECT_TRUE(s.contact.rough_walls);
+  EXPECT_EQ(s.contact.kappa_units, KappaUnits::Cgs);
+  EXPECT_EQ(s.contact.wall_tangential, ContactTangential::RoughElastic);
+  EXPECT_EQ(s.contact.tc_tangential, ContactTangential::Coulomb);
+  EXPECT_EQ(s.contact.tc_window, TcWindow::Anchored);
   EXPECT_EQ(s.contact.tc_time, 1e-5);
   EXPECT_EQ(s.initial.temperature, 1e-7);
   EXPECT_EQ(s.initial.placement, InitialPlacement::Lattice);
@@ -251,8 +260,11 @@ TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
                                     "contact.viscosity=1.1e-3",
                                     "contact.friction=0.3",
                                     "contact.tangential_limit=-0.2",
-                                    "contact.rough_walls=true",
+                                    "contact.kappa_units=gd",
+                                    "contact.wall_tangential=coulomb",
                                     "contact.tc=1.5e-6",
+                                    "contact.tc_tangential=rough-elastic",
+                                    "contact.tc_window=anchored",
                                     "contact.rest_velocity=2e-6",
                                     "initial.temperature=3e-7",
                                     "initial.placement=lattice",
@@ -269,6 +281,13 @@ TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
   const std::string text = sceneToToml(s);
   expectSameScene(parseSceneString(text), s);
   EXPECT_EQ(sceneToToml(parseSceneString(text)), text);
+}
+
+TEST(SceneParser, OlderRoughWallsKeyMeansCoulombWalls) {
+  EXPECT_EQ(parseSceneString("[contact]\nrough_walls = true").contact.wall_tangential,
+            ContactTangential::Coulomb);
+  EXPECT_EQ(parseSceneString("[contact]\nrough_walls = false").contact.wall_tangential,
+            ContactTangential::Smooth);
 }
 
 TEST(SceneToToml, RoundTripsDoublesBitForBit) {
@@ -369,6 +388,22 @@ const ErrorCase kParseErrors[] = {
      "[contact]\nrestitution = \"moist\"\n",
      {},
      {"contact.restitution = \"moist\"", R"(one of "constant", "dry", "wet")"}},
+    {"UnknownWallTangential",
+     "[contact]\nwall_tangential = \"rough\"\n",
+     {},
+     {"contact.wall_tangential = \"rough\"", R"(one of "smooth", "rough-elastic", "coulomb")"}},
+    {"UnknownTcTangential",
+     "[contact]\ntc_tangential = 1\n",
+     {},
+     {"contact.tc_tangential = 1", R"("rough-elastic")"}},
+    {"UnknownTcWindow",
+     "[contact]\ntc_window = \"fixed\"\n",
+     {},
+     {"contact.tc_window = \"fixed\"", R"(one of "rolling", "anchored")"}},
+    {"UnknownKappaUnits",
+     "[contact]\nkappa_units = \"m/s\"\n",
+     {},
+     {"contact.kappa_units = \"m/s\"", R"(one of "si", "gd", "cgs")"}},
     {"UnknownPlacement",
      "[initial]\nplacement = \"grid\"\n",
      {},
