@@ -113,7 +113,7 @@ void EdSimulation::setUp(int n) {
         "container.periodic_z needs an undriven scene (drive.frequency = 0)");
 
   // Lab-frame grid covering every height a centre can reach: [-A, L_z + A] with walls,
-  // [0, L_z) periodic (coarse-graining.md uses the same extent).
+  // [0, L_z) periodic (docs/fields.md uses the same extent).
   CellGeometry g;
   g.periodic_x = cfg_.periodic_x;
   g.periodic_z = cfg_.periodic_z;

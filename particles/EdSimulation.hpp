@@ -1,6 +1,6 @@
 #pragma once
 // Event-driven (ED) hard-sphere simulation of a quasi-2D vibrated granular layer
-// (paper, Methods; model fixed in shared/design/physics-particles.md).
+// (paper, Methods; as implemented: docs/physics.md).
 //
 // Particles fly ballistically under gravity between instantaneous events: pair collisions
 // (exact quadratic), collisions with the sinusoidally moving bottom and lid (exact first

@@ -5,7 +5,7 @@
 // rides a vibrating wall) has a bounded curvature from below, h'' >= -H. From any t0,
 //   h(t0 + s) >= h0 + h0' s - H s^2 / 2,
 // so h has no root before the positive root s* of that parabola: stepping by s* can never
-// skip a root (physics-particles.md, "Moving walls"). Near a root with h' < 0 the steps
+// skip a root (docs/physics.md, "Event-driven dynamics"). Near a root with h' < 0 the steps
 // converge quadratically; at a grazing approach they stay finite (s ~ sqrt(2 h / H)).
 // Returns the first t in [t0, horizon] with h <= tol and h' < 0, or +inf if there is none
 // before the horizon. A touching gap whose rate is at or above zero is not a collision.

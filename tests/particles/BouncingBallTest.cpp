@@ -1,5 +1,5 @@
 // A single completely inelastic ball on a sinusoidally vibrated plate (Mehta & Luck 1990;
-// Melo et al. 1994; anchors.md): it rests on the plate until the plate's acceleration falls
+// Melo et al. 1994): it rests on the plate until the plate's acceleration falls
 // below -g (sin(w t) = 1/Gamma), flies freely, lands with zero rebound and rests again.
 // Period 1 below Gamma = sqrt(pi^2 + 4) = 3.7242, period 2 from there to 6.5938.
 //

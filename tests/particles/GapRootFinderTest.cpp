@@ -1,5 +1,5 @@
 // First closing root of a gap with bounded curvature: the moving-wall root finder
-// (physics-particles.md, "Moving walls"). Expected values come from closed forms or from
+// (docs/physics.md, "Event-driven dynamics"). Expected values come from closed forms or from
 // a dense brute-force scan, never from the finder itself.
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Moving walls: no particle is ever found outside the container over long driven runs,
-// for the dry and the wet law, with friction and rough walls (physics-particles.md).
+// for the dry and the wet law, with friction and rough walls (docs/physics.md, "Collision rule").
 #include <gtest/gtest.h>
 
 #include "EngineTestSupport.hpp"
