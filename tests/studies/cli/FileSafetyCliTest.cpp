@@ -174,11 +174,12 @@ TEST_F(FileSafetyCli, OutOfMemoryHasItsOwnExitCodeAndMessage) {
 #ifdef __SANITIZE_ADDRESS__
   GTEST_SKIP() << "AddressSanitizer needs more address space than the limit below leaves";
 #endif
-  // 600 MB of address space is too little for four million grains (their state, event queue
-  // and cell lists); the allocation fails as it would on a small machine.
+  // 120 MB of address space is too little for a million grains (their state, event queue
+  // and cell lists; the largest scene the ranges allow needs about 250 MB): the allocation
+  // fails as it would on a small machine.
   const Result r =
-      run("simulate -q s.toml --no-output --set particles.count=4000000 --set "
-          "container.width=40 --set container.height=40",
-          "ulimit -v 600000;");
+      run("simulate -q s.toml --no-output --set particles.count=1000000 --set "
+          "container.width=6 --set container.height=6 --set run.duration=0.001",
+          "ulimit -v 120000;");
   expectRefusal(r, "out of memory", 71);
 }
