@@ -19,11 +19,7 @@ same_results() {
 }
 same_as_alone() {
   same_results --exclude-path /runs/wall_seconds --exclude-path /runs/cpu_seconds \
-    --exclude-path /results/wave_fronts/cost \
-    --exclude-path /results/wave_fronts/n_sweep/dry/ed_cpu_per_answer \
-    --exclude-path /results/wave_fronts/n_sweep/dry/hydro_cpu_per_answer \
-    --exclude-path /results/wave_fronts/n_sweep/wet/ed_cpu_per_answer \
-    --exclude-path /results/wave_fronts/n_sweep/wet/hydro_cpu_per_answer "$reference" "$1"
+    --exclude-path /results/wave_fronts/cost "$reference" "$1"
 }
 
 together() {
