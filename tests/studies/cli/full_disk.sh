@@ -1,7 +1,8 @@
 #!/bin/bash
 # A full disk: every command that writes HDF5 (simulate, simulate --fields, hydro, fields)
 # exits 74 with one line naming the cause ("No space left on device"), a checkpointed run
-# exits 75 with the same cause (its checkpoint could not be written; docs/commands.md), crashes
+# exits 74 or, when its checkpoint is the file that could not be written, 75 with the same
+# cause (docs/commands.md), crashes
 # neither in the error path nor at exit (an HDF5 file whose flush failed must be closed before
 # the library shuts down), and leaves nothing in the full directory. The full file system is a
 # small tmpfs this test mounts, so it needs root (or CAP_SYS_ADMIN); skipped (77) otherwise.
@@ -27,7 +28,7 @@ expect_full() {
   shift 2
   local code=0
   "$@" > "$work/$name.out" 2> "$work/$name.err" || code=$?
-  [ "$code" -eq "$expected" ] ||
+  [[ " $expected " == *" $code "* ]] ||
     fail "$name: exit $code, expected $expected: $(head -c 600 "$work/$name.err")"
   grep -q "No space left on device" "$work/$name.err" ||
     fail "$name: the cause is not named: $(cat "$work/$name.err")"
@@ -36,7 +37,9 @@ expect_full() {
 }
 
 expect_full simulate 74 "$granwave" simulate "$dry" --set run.duration=1 -q -o "$work/full/run.h5"
-expect_full simulate_checkpointed 75 "$granwave" simulate "$dry" --set run.duration=1 -q \
+# Which file meets the full disk first depends on the sizes written: the run file (74) or the
+# checkpoint (75).
+expect_full simulate_checkpointed "74 75" "$granwave" simulate "$dry" --set run.duration=1 -q \
   -o "$work/full/run.h5" --checkpoint-every 0.05
 expect_full simulate_fields 74 "$granwave" simulate "$dry" --set run.duration=2 -q \
   --no-output --fields "$work/full/fields.h5"
