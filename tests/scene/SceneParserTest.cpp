@@ -1,6 +1,7 @@
-// Scene files: keys read into the Scene, --set overrides, the shipped scenes, the round trip
-// through sceneToToml, and the parse-level errors (syntax, unknown keys, types, bad --set).
-// The semantic (range, geometry) errors are in SceneValidationTest.cpp.
+// Scene files: keys read into the Scene, --set overrides, the shipped scenes and the
+// parse-level errors (syntax, unknown keys, types, bad --set).
+// The semantic (range, geometry) errors are in SceneValidationTest.cpp, the round trip
+// through sceneToToml in SceneWriterTest.cpp.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -8,55 +9,13 @@
 #include <vector>
 
 #include "scene/SceneParser.hpp"
+#include "tests/scene/SceneExpectations.hpp"
 
 namespace granwave {
 namespace {
 
+using test::expectSameScene;
 using ::testing::HasSubstr;
-
-void expectSameScene(const Scene& a, const Scene& b) {
-  EXPECT_EQ(a.particles.count, b.particles.count);
-  EXPECT_EQ(a.particles.diameter, b.particles.diameter);
-  EXPECT_EQ(a.particles.density, b.particles.density);
-  EXPECT_EQ(a.particles.youngs_modulus, b.particles.youngs_modulus);
-  EXPECT_EQ(a.particles.poisson_ratio, b.particles.poisson_ratio);
-  EXPECT_EQ(a.container.width, b.container.width);
-  EXPECT_EQ(a.container.height, b.container.height);
-  EXPECT_EQ(a.container.periodic_x, b.container.periodic_x);
-  EXPECT_EQ(a.container.periodic_z, b.container.periodic_z);
-  EXPECT_EQ(a.drive.frequency, b.drive.frequency);
-  EXPECT_EQ(a.drive.gamma, b.drive.gamma);
-  EXPECT_EQ(a.drive.amplitude, b.drive.amplitude);
-  EXPECT_EQ(a.contact.restitution, b.contact.restitution);
-  EXPECT_EQ(a.contact.e, b.contact.e);
-  EXPECT_EQ(a.contact.kappa, b.contact.kappa);
-  EXPECT_EQ(a.contact.e_inf, b.contact.e_inf);
-  EXPECT_EQ(a.contact.stokes_critical, b.contact.stokes_critical);
-  EXPECT_EQ(a.contact.viscosity, b.contact.viscosity);
-  EXPECT_EQ(a.contact.friction, b.contact.friction);
-  EXPECT_EQ(a.contact.tangential_limit, b.contact.tangential_limit);
-  EXPECT_EQ(a.contact.kappa_units, b.contact.kappa_units);
-  EXPECT_EQ(a.contact.wall_tangential, b.contact.wall_tangential);
-  EXPECT_EQ(a.contact.tc_tangential, b.contact.tc_tangential);
-  EXPECT_EQ(a.contact.tc_window, b.contact.tc_window);
-  EXPECT_EQ(a.contact.tc_enabled, b.contact.tc_enabled);
-  EXPECT_EQ(a.contact.tc_time, b.contact.tc_time);
-  EXPECT_EQ(a.contact.rest_velocity, b.contact.rest_velocity);
-  EXPECT_EQ(a.initial.temperature, b.initial.temperature);
-  EXPECT_EQ(a.initial.placement, b.initial.placement);
-  EXPECT_EQ(a.run.duration, b.run.duration);
-  EXPECT_EQ(a.run.phases_per_cycle, b.run.phases_per_cycle);
-  EXPECT_EQ(a.run.record_interval, b.run.record_interval);
-  EXPECT_EQ(a.run.trajectory_stride, b.run.trajectory_stride);
-  EXPECT_EQ(a.run.seed, b.run.seed);
-  EXPECT_EQ(a.run.gravity, b.run.gravity);
-  EXPECT_EQ(a.hydro.cells, b.hydro.cells);
-  EXPECT_EQ(a.hydro.rtol, b.hydro.rtol);
-  EXPECT_EQ(a.hydro.atol, b.hydro.atol);
-  EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);
-  EXPECT_EQ(a.hydro.transport, b.hydro.transport);
-  EXPECT_EQ(a.hydro.side_walls, b.hydro.side_walls);
-}
 
 std::string sceneFile(const char* name) {
   return std::string(GRANWAVE_SOURCE_DIR) + "/scenes/" + name;
@@ -235,86 +194,11 @@ TEST(SceneOverrides, GammaReplacesAnAmplitudeGivenInTheFile) {
   EXPECT_FALSE(s.drive.amplitude.has_value());
 }
 
-// --- round trip ---
-
-TEST(SceneToToml, RoundTripsTheDefaults) {
-  const Scene s;
-  expectSameScene(parseSceneString(sceneToToml(s)), s);
-}
-
-TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
-  const Scene s = parseSceneString("[drive]\nfrequency = 17.3\namplitude = 0.0012345678901234\n",
-                                   {"particles.count=123",
-                                    "particles.diameter=0.0021",
-                                    "particles.density=2400.5",
-                                    "particles.youngs_modulus=5.5e10",
-                                    "particles.poisson_ratio=-0.1",
-                                    "container.width=0.07",
-                                    "container.height=0.05",
-                                    "container.periodic_x=true",
-                                    "contact.restitution=constant",
-                                    "contact.e=0.7",
-                                    "contact.kappa=0.12",
-                                    "contact.e_inf=0.8",
-                                    "contact.stokes_critical=33",
-                                    "contact.viscosity=1.1e-3",
-                                    "contact.friction=0.3",
-                                    "contact.tangential_limit=-0.2",
-                                    "contact.kappa_units=gd",
-                                    "contact.wall_tangential=coulomb",
-                                    "contact.tc=1.5e-6",
-                                    "contact.tc_tangential=rough-elastic",
-                                    "contact.tc_window=anchored",
-                                    "contact.rest_velocity=2e-6",
-                                    "initial.temperature=3e-7",
-                                    "initial.placement=lattice",
-                                    "run.duration=0.1",
-                                    "run.phases_per_cycle=7",
-                                    "run.record_interval=0.003",
-                                    "run.trajectory_stride=3",
-                                    "run.seed=9007199254740993",
-                                    "run.gravity=9.80665",
-                                    "hydro.cells=64",
-                                    "hydro.rtol=1e-7",
-                                    "hydro.atol=1e-11",
-                                    "hydro.restitution_model=constant"});
-  const std::string text = sceneToToml(s);
-  expectSameScene(parseSceneString(text), s);
-  EXPECT_EQ(sceneToToml(parseSceneString(text)), text);
-}
-
 TEST(SceneParser, OlderRoughWallsKeyMeansCoulombWalls) {
   EXPECT_EQ(parseSceneString("[contact]\nrough_walls = true").contact.wall_tangential,
             ContactTangential::Coulomb);
   EXPECT_EQ(parseSceneString("[contact]\nrough_walls = false").contact.wall_tangential,
             ContactTangential::Smooth);
-}
-
-TEST(SceneToToml, RoundTripsDoublesBitForBit) {
-  Scene s;
-  s.particles.density = (0.1 + 0.2) * 1e4;
-  s.particles.youngs_modulus = 1.2345678901234567e11;
-  s.contact.viscosity = 1.0 / 3.0;
-  s.contact.rest_velocity = 5e-324;
-  s.hydro.atol = 1e-10 / 3.0;
-  s.run.seed = 9223372036854775807u;
-  expectSameScene(parseSceneString(sceneToToml(s)), s);
-}
-
-TEST(SceneToToml, RoundTripsTcOffAndAnUndrivenPeriodicBox) {
-  const Scene s = parseSceneString(
-      "", {"contact.tc=off", "drive.frequency=0", "container.periodic_z=true", "run.gravity=0"});
-  expectSameScene(parseSceneString(sceneToToml(s)), s);
-}
-
-TEST(SceneToToml, WritesEverySectionAndKey) {
-  const std::string text = sceneToToml(Scene{});
-  for (const char* key :
-       {"[particles]", "count =", "poisson_ratio =", "[container]", "periodic_z =", "[drive]",
-        "gamma = 4.0", "[contact]", "restitution = \"dry\"", "tc = \"auto\"",
-        "rest_velocity =", "[initial]", "temperature = \"paper\"", "placement = \"random\"",
-        "[run]", "seed = 1", "[hydro]", "restitution_model = \"velocity\""})
-    EXPECT_THAT(text, HasSubstr(key));
 }
 
 // --- parse-level errors: one line, naming the file, the key and what is valid ---

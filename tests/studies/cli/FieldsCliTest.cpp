@@ -28,10 +28,11 @@ class FieldsCli : public ::testing::Test {
     fs::remove_all(dir_);
     fs::create_directories(dir_);
     std::ofstream(dir_ / "wet.toml") << "[contact]\nrestitution = \"wet\"\n[run]\nduration = 4\n";
-    ASSERT_EQ(std::system(("cd '" + dir_.string() +
-                           "' && '" GRANWAVE_BINARY "' simulate -q wet.toml -o wet.h5 > simulate.txt")
-                              .c_str()),
-              0);
+    ASSERT_EQ(
+        std::system(("cd '" + dir_.string() +
+                     "' && '" GRANWAVE_BINARY "' simulate -q wet.toml -o wet.h5 > simulate.txt")
+                        .c_str()),
+        0);
   }
   static void TearDownTestSuite() { fs::remove_all(dir_); }
 
@@ -72,7 +73,8 @@ TEST_F(FieldsCli, GivesTheRunThePeriodSimulateGaveIt) {
     const Result r = run("fields wet.h5 -o f.h5" + discard);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("layer period    " + period + "T"), std::string::npos)
-        << "simulate: " << period << "T; fields" << discard << ":\n" << r.out;
+        << "simulate: " << period << "T; fields" << discard << ":\n"
+        << r.out;
     EXPECT_NE(r.out.find("period-2 state  "), std::string::npos) << r.out;
     fs::remove(dir_ / "f.h5");
     fs::remove(dir_ / "f.xdmf");
