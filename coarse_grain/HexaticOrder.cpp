@@ -7,6 +7,24 @@
 
 namespace granwave {
 
+namespace {
+
+// The cells (ix +- reach, iz +- 1) of an nx x nz grid that exist, wrapped in x if periodic.
+std::vector<std::size_t> cellStencil(int ix, int iz, int nx, int nz, int reach, bool periodic_x) {
+  std::vector<std::size_t> cells;
+  for (int jz = std::max(0, iz - 1); jz <= std::min(nz - 1, iz + 1); ++jz)
+    for (int dx = -reach; dx <= reach; ++dx) {
+      const int jx = ix + dx;
+      if (jx >= 0 && jx < nx)
+        cells.push_back(static_cast<std::size_t>(jz) * nx + jx);
+      else if (periodic_x)
+        cells.push_back(static_cast<std::size_t>(jz) * nx + (jx + nx) % nx);
+    }
+  return cells;
+}
+
+}  // namespace
+
 std::vector<std::vector<int>> neighboursWithin(std::span<const double> x, std::span<const double> z,
                                                double cutoff, double width, bool periodic_x) {
   if (x.size() != z.size())
@@ -44,25 +62,14 @@ std::vector<std::vector<int>> neighboursWithin(std::span<const double> x, std::s
   const double cut2 = cutoff * cutoff;
   const int reach = nx == 1 ? 0 : 1;
   for (int i = 0; i < n; ++i) {
-    const int ix = cellX(x[i]), iz = cellZ(z[i]);
-    for (int dz = -1; dz <= 1; ++dz) {
-      const int jz = iz + dz;
-      if (jz < 0 || jz >= nz) continue;
-      for (int dx = -reach; dx <= reach; ++dx) {
-        int jx = ix + dx;
-        if (jx < 0 || jx >= nx) {
-          if (!periodic_x) continue;
-          jx = (jx + nx) % nx;
-        }
-        for (int k : cell[static_cast<std::size_t>(jz) * nx + jx]) {
-          if (k == i) continue;
-          double rx = x[k] - x[i];
-          if (periodic_x) rx -= width * std::round(rx / width);
-          const double rz = z[k] - z[i];
-          if (rx * rx + rz * rz < cut2) nb[i].push_back(k);
-        }
+    for (const std::size_t c : cellStencil(cellX(x[i]), cellZ(z[i]), nx, nz, reach, periodic_x))
+      for (int k : cell[c]) {
+        if (k == i) continue;
+        double rx = x[k] - x[i];
+        if (periodic_x) rx -= width * std::round(rx / width);
+        const double rz = z[k] - z[i];
+        if (rx * rx + rz * rz < cut2) nb[i].push_back(k);
       }
-    }
     std::sort(nb[i].begin(), nb[i].end());
   }
   return nb;

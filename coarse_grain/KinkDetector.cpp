@@ -60,14 +60,8 @@ double plateauFlatness(const std::vector<double>& v) {
   return 1.0 - std::sqrt(std::max(0.0, sum2 / count - mean * mean)) / mean;
 }
 
-}  // namespace
-
-KinkResult detectKinks(const SurfaceProfile& cycle_a, const SurfaceProfile& cycle_b,
-                       const KinkOptions& options) {
-  return detectKinks(std::vector<SurfaceProfile>{cycle_a, cycle_b}, options);
-}
-
-KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOptions& opt) {
+// Throws unless there are two or more profiles of one non-empty grid.
+void requireComparable(const std::vector<SurfaceProfile>& cycles) {
   if (cycles.size() < 2)
     throw std::invalid_argument(
         "kink detection needs profiles from at least 2 consecutive cycles, got " +
@@ -81,6 +75,49 @@ KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOpti
       throw std::invalid_argument(
           "kink detection: profiles differ in columns, width, diameter or boundary type");
   }
+}
+
+// Runs of equal non-zero sign of sAt(0 .. n-1) at least min_domain diameters wide (columns
+// w wide, diameter d), equal neighbours merged; with periodic x the first and last meet
+// across the start of the scan (the merged run then has a negative start).
+template <class SignAt>
+std::vector<Run> signedDomains(SignAt sAt, int n, double w, double d, bool periodic_x,
+                               const KinkOptions& opt) {
+  std::vector<Run> runs;
+  for (int j = 0; j < n;) {
+    if (sAt(j) == 0) {
+      ++j;
+      continue;
+    }
+    Run run{j, j, sAt(j)};
+    while (run.end + 1 < n && sAt(run.end + 1) == run.sign) ++run.end;
+    j = run.end + 1;
+    if ((run.end - run.start + 1) * w >= opt.min_domain * d * (1 - 1e-12)) runs.push_back(run);
+  }
+  std::vector<Run> merged;
+  for (const Run& run : runs) {
+    if (!merged.empty() && merged.back().sign == run.sign)
+      merged.back().end = run.end;
+    else
+      merged.push_back(run);
+  }
+  if (periodic_x && merged.size() >= 2 && merged.front().sign == merged.back().sign) {
+    merged.front().start = merged.back().start - n;  // negative start: wraps
+    merged.pop_back();
+  }
+  return merged;
+}
+
+}  // namespace
+
+KinkResult detectKinks(const SurfaceProfile& cycle_a, const SurfaceProfile& cycle_b,
+                       const KinkOptions& options) {
+  return detectKinks(std::vector<SurfaceProfile>{cycle_a, cycle_b}, options);
+}
+
+KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOptions& opt) {
+  requireComparable(cycles);
+  const SurfaceProfile& first = cycles.front();
   const int n = first.columns();
   const double d = first.diameter, w = first.column_width;
 
@@ -103,32 +140,7 @@ KinkResult detectKinks(const std::vector<SurfaceProfile>& cycles, const KinkOpti
   }
   auto sAt = [&](int j) { return s[(rot + j) % n]; };
 
-  // Runs of equal non-zero sign; drop the narrow ones; merge equal neighbours.
-  std::vector<Run> runs;
-  for (int j = 0; j < n;) {
-    if (sAt(j) == 0) {
-      ++j;
-      continue;
-    }
-    Run run{j, j, sAt(j)};
-    while (run.end + 1 < n && sAt(run.end + 1) == run.sign) ++run.end;
-    j = run.end + 1;
-    if ((run.end - run.start + 1) * w >= opt.min_domain * d * (1 - 1e-12)) runs.push_back(run);
-  }
-  std::vector<Run> merged;
-  for (const Run& run : runs) {
-    if (!merged.empty() && merged.back().sign == run.sign)
-      merged.back().end = run.end;
-    else
-      merged.push_back(run);
-  }
-  // Periodic: the first and last domains meet across the start of the scan.
-  const bool wrap_merge =
-      first.periodic_x && merged.size() >= 2 && merged.front().sign == merged.back().sign;
-  if (wrap_merge) {
-    merged.front().start = merged.back().start - n;  // negative start: wraps
-    merged.pop_back();
-  }
+  const std::vector<Run> merged = signedDomains(sAt, n, w, d, first.periodic_x, opt);
 
   for (const Run& run : merged) {
     KinkDomain dom;

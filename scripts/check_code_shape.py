@@ -22,7 +22,7 @@ import shlex
 import sys
 from concurrent.futures import ProcessPoolExecutor
 
-SOURCE_DIRS = ("scene", "h5", "particles", "coarse_grain", "hydro", "studies", "tests", "bench")
+SOURCE_DIRS = ("scene", "h5", "files", "particles", "coarse_grain", "hydro", "studies", "tests", "bench")
 EXTENSIONS = (".cpp", ".hpp", ".h")
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -143,6 +143,11 @@ def main():
         entries = [e for e in json.load(f)
                    if os.path.realpath(e["file"]).startswith(ROOT + os.sep)
                    and selected(os.path.relpath(os.path.realpath(e["file"]), ROOT))]
+    stale = [e["file"] for e in entries if not os.path.exists(e["file"])]
+    if stale:
+        print(f"check_code_shape: {db} names {stale[0]}, which does not exist "
+              f"({len(stale)} such files; reconfigure the build with CMake)", file=sys.stderr)
+        return 2
     functions = {}
     with ProcessPoolExecutor(max_workers=a.j) as pool:
         for found in pool.map(functions_of, entries):

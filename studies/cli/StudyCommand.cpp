@@ -164,6 +164,8 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
                [&opt](const RunRecord& r) { return childArguments(r, opt.checkpoint_every); });
     return 0;
   }
+  // From here on an interrupt stops the runs and exits 130 (the workers above stop with rank 0).
+  installInterruptFlag();
   const auto t0 = std::chrono::steady_clock::now();
   RemoteWorkers remote(mpi);
   SchedulerOptions scheduling{jobs, opt.quiet, opt.checkpoint_every, {}};

@@ -125,8 +125,10 @@ class Schedule {
   }
 
   std::vector<RunRecord> run() {
-    announce();
+    // The handler is in place before the announcement, so a caller that waits for it can
+    // interrupt the study at once.
     const auto& interrupt = installInterruptFlag();
+    announce();
     while (!pending_.empty() || !waiting_.empty() || !running_.empty() ||
            (remote_ && remote_->busy() > 0)) {
       if (interrupt.load()) stopOnInterrupt();

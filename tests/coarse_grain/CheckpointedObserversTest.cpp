@@ -104,6 +104,20 @@ TEST(CheckpointedObservers, RestoredPhaseAveragerEndsAsTheUninterruptedOne) {
   }
 }
 
+// Every field of two snapshots agrees bit for bit.
+void expectSameBits(const Snapshot& p, const Snapshot& q) {
+  EXPECT_EQ(p.step, q.step);
+  EXPECT_TRUE(sameBits(p.time, q.time));
+  EXPECT_TRUE(sameBits(p.plate_height, q.plate_height));
+  EXPECT_TRUE(sameBits(p.obs.center_of_mass_height, q.obs.center_of_mass_height));
+  for (const auto member :
+       {&Snapshot::x, &Snapshot::z, &Snapshot::vx, &Snapshot::vz, &Snapshot::omega}) {
+    ASSERT_EQ((p.*member).size(), static_cast<std::size_t>(kParticles));
+    ASSERT_EQ((q.*member).size(), static_cast<std::size_t>(kParticles));
+    EXPECT_EQ(0, std::memcmp((p.*member).data(), (q.*member).data(), kParticles * sizeof(double)));
+  }
+}
+
 TEST(CheckpointedObservers, RestoredPatternSamplerKeepsTheSameCycles) {
   testing::ScratchDir dir;
   const auto run = syntheticRun();
@@ -117,20 +131,7 @@ TEST(CheckpointedObservers, RestoredPatternSamplerKeepsTheSameCycles) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t c = 0; c < a.size(); ++c) {
     ASSERT_EQ(a[c].size(), b[c].size());
-    for (std::size_t k = 0; k < a[c].size(); ++k) {
-      const Snapshot &p = a[c][k], &q = b[c][k];
-      EXPECT_EQ(p.step, q.step);
-      EXPECT_TRUE(sameBits(p.time, q.time));
-      EXPECT_TRUE(sameBits(p.plate_height, q.plate_height));
-      EXPECT_TRUE(sameBits(p.obs.center_of_mass_height, q.obs.center_of_mass_height));
-      for (const auto member :
-           {&Snapshot::x, &Snapshot::z, &Snapshot::vx, &Snapshot::vz, &Snapshot::omega}) {
-        ASSERT_EQ((p.*member).size(), static_cast<std::size_t>(kParticles));
-        ASSERT_EQ((q.*member).size(), static_cast<std::size_t>(kParticles));
-        EXPECT_EQ(0,
-                  std::memcmp((p.*member).data(), (q.*member).data(), kParticles * sizeof(double)));
-      }
-    }
+    for (std::size_t k = 0; k < a[c].size(); ++k) expectSameBits(a[c][k], b[c][k]);
   }
 }
 

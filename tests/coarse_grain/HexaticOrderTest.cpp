@@ -49,6 +49,16 @@ Packing square(int nx, int nz, double a) {
 // Uniform numbers in [0, 1) from the raw engine (fixed seed, portable across libraries).
 double uniform(std::mt19937_64& rng) { return (rng() >> 11) * 0x1.0p-53; }
 
+// True if a disk at (x, z) overlaps none of the disks of `p` in the buckets around (ix, iz).
+bool fits(const Packing& p, const std::vector<std::vector<int>>& bucket, int nbx, int nbz, double x,
+          double z, int ix, int iz) {
+  for (int jz = std::max(0, iz - 1); jz <= std::min(nbz - 1, iz + 1); ++jz)
+    for (int jx = std::max(0, ix - 1); jx <= std::min(nbx - 1, ix + 1); ++jx)
+      for (int k : bucket[static_cast<std::size_t>(jz) * nbx + jx])
+        if (std::hypot(x - p.x[k], z - p.z[k]) < d) return false;
+  return true;
+}
+
 // Random sequential addition of disks of diameter d in a w x h box with walls, until
 // `attempts` trial positions have been drawn (near the jamming coverage 0.547 of 2D RSA,
 // Feder, J. Theor. Biol. 87, 237 (1980)).
@@ -61,12 +71,7 @@ Packing randomSequentialAddition(double w, double h, long attempts, std::uint64_
     const double x = 0.5 * d + uniform(rng) * (w - d), z = 0.5 * d + uniform(rng) * (h - d);
     const int ix = std::min(nbx - 1, static_cast<int>(x / (w / nbx)));
     const int iz = std::min(nbz - 1, static_cast<int>(z / (h / nbz)));
-    bool free = true;
-    for (int jz = std::max(0, iz - 1); jz <= std::min(nbz - 1, iz + 1) && free; ++jz)
-      for (int jx = std::max(0, ix - 1); jx <= std::min(nbx - 1, ix + 1) && free; ++jx)
-        for (int k : bucket[static_cast<std::size_t>(jz) * nbx + jx])
-          if (std::hypot(x - p.x[k], z - p.z[k]) < d) free = false;
-    if (!free) continue;
+    if (!fits(p, bucket, nbx, nbz, x, z, ix, iz)) continue;
     bucket[static_cast<std::size_t>(iz) * nbx + ix].push_back(static_cast<int>(p.x.size()));
     p.x.push_back(x);
     p.z.push_back(z);

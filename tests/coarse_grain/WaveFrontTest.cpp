@@ -20,6 +20,37 @@ struct Synthetic {
   double dt = 1e-3;  // s between phases
 };
 
+// The random draws of the synthetic gas, in one order for every snapshot.
+struct Draws {
+  std::mt19937_64 rng;
+  std::normal_distribution<double> unit{0.0, 1.0};
+  std::uniform_real_distribution<double> in{0.05, 0.95};
+};
+
+// Two particles per cell of an nx x nz grid at one phase of a cycle.
+Snapshot phaseSnapshot(const Synthetic& sp, int nx, int nz, int cycle, int ph, Draws& r) {
+  Snapshot s;
+  s.step = static_cast<std::uint64_t>(cycle) * sp.phases + ph;
+  // Front from z = 5 d at phase 10 rising at `speed` until phase 30; no front otherwise.
+  const bool active = ph >= 10 && ph <= 30;
+  const double zf = 5.5 * kD + sp.speed * (ph - 10) * sp.dt;
+  for (int j = 0; j < nz; ++j) {
+    const double zc = (j + 0.5) * kD;
+    const double peak = active ? std::exp(-std::pow((zc - zf) / (1.5 * kD), 2)) : 0.0;
+    const double T = kT0 * (0.1 + 1.5 * peak);  // background 0.1 T0, peak 1.6 T0
+    const double drift = active && zc > zf + kD ? sp.gas : 0.0;
+    for (int n = 0; n < 2 * nx; ++n) {
+      const int i = n / 2;
+      s.x.push_back((i + r.in(r.rng)) * kD);
+      s.z.push_back(zc + (r.in(r.rng) - 0.5) * kD);
+      s.vx.push_back(r.unit(r.rng) * std::sqrt(T / kMass));
+      s.vz.push_back(drift + r.unit(r.rng) * std::sqrt(T / kMass));
+      s.omega.push_back(0);
+    }
+  }
+  return s;
+}
+
 FieldsAnalysis analyse(const Synthetic& sp, int cycles, std::uint64_t seed) {
   PhaseAveragerConfig c;
   c.grid.nx = 10;
@@ -31,34 +62,10 @@ FieldsAnalysis analyse(const Synthetic& sp, int cycles, std::uint64_t seed) {
   c.total_cycles = cycles;
   c.fixed_discard = 0;
   PhaseAverager av(c);
-  std::mt19937_64 rng(seed);
-  std::normal_distribution<double> unit(0.0, 1.0);
-  std::uniform_real_distribution<double> in(0.05, 0.95);
-  for (int cycle = 0; cycle < cycles; ++cycle) {
-    for (int ph = 0; ph < sp.phases; ++ph) {
-      Snapshot s;
-      s.step = static_cast<std::uint64_t>(cycle) * sp.phases + ph;
-      // Front from z = 5 d at phase 10 rising at `speed` until phase 30; no front otherwise.
-      const bool active = ph >= 10 && ph <= 30;
-      const double zf = 5.5 * kD + sp.speed * (ph - 10) * sp.dt;
-      for (int j = 0; j < c.grid.nz; ++j) {
-        const double zc = (j + 0.5) * kD;
-        const double peak = active ? std::exp(-std::pow((zc - zf) / (1.5 * kD), 2)) : 0.0;
-        const double T = kT0 * (0.1 + 1.5 * peak);  // background 0.1 T0, peak 1.6 T0
-        const double drift = active && zc > zf + kD ? sp.gas : 0.0;
-        for (int i = 0; i < c.grid.nx; ++i) {
-          for (int k = 0; k < 2; ++k) {
-            s.x.push_back((i + in(rng)) * kD);
-            s.z.push_back(zc + (in(rng)-0.5) * kD);
-            s.vx.push_back(unit(rng) * std::sqrt(T / kMass));
-            s.vz.push_back(drift + unit(rng) * std::sqrt(T / kMass));
-            s.omega.push_back(0);
-          }
-        }
-      }
-      av.observe(s);
-    }
-  }
+  Draws draws{std::mt19937_64(seed)};
+  for (int cycle = 0; cycle < cycles; ++cycle)
+    for (int ph = 0; ph < sp.phases; ++ph)
+      av.observe(phaseSnapshot(sp, c.grid.nx, c.grid.nz, cycle, ph, draws));
   FieldsContext ctx;
   ctx.diameter = kD;
   ctx.mass = kMass;

@@ -91,6 +91,16 @@ class StudyCli : public ::testing::Test {
     ss << in.rdbuf();
     return ss.str();
   }
+  // True once `file` contains `text`; false after `limit`.
+  static bool waitForText(const fs::path& file, const std::string& text,
+                          std::chrono::seconds limit) {
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (slurp(file).find(text) == std::string::npos) {
+      if (std::chrono::steady_clock::now() > end) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return true;
+  }
   Result run(const std::string& args) {
     const std::string cmd =
         "cd '" + dir_.string() + "' && '" GRANWAVE_BINARY "' " + args + " > out.txt 2> err.txt";
@@ -335,7 +345,10 @@ TEST_F(StudyCli, InterruptExitsWith130KeepsFinishedRunsAndTheSameCommandResumes)
   const fs::path out = dir_ / "out";
   const pid_t pid = spawn(dir_, {"study", kTinyStudy, "-o", out.string(), "-j", "2"});
   ASSERT_GT(pid, 0);
-  std::this_thread::sleep_for(std::chrono::seconds(1));
+  // Interrupt once the study has announced its runs (its handler is in place by then), however
+  // slowly it starts (a loaded machine, a sanitizer build).
+  ASSERT_TRUE(waitForText(dir_ / "err.txt", "granwave study: ", std::chrono::seconds(120)))
+      << slurp(dir_ / "err.txt");
   ASSERT_EQ(::kill(pid, SIGINT), 0);  // the study only: it stops its runs itself
   int status = 0;
   ASSERT_EQ(::waitpid(pid, &status, 0), pid);

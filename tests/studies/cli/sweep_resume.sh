@@ -38,9 +38,9 @@ while :; do
     }
     sleep 0.05
     i=$((i + 1))
-    [ "$i" -lt 1200 ] || {
+    [ "$i" -lt 6000 ] || {
       kill -9 "$pid" 2>/dev/null || true
-      echo "sweep_resume: no run checkpointed within 60 s" >&2
+      echo "sweep_resume: no run checkpointed within 300 s" >&2
       exit 1
     }
   done
