@@ -7,10 +7,68 @@
 #include <random>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 namespace granwave {
 
 namespace {
+
+// A neighbour bucket index j of n along one axis: wrapped (with the image shift) if the axis is
+// periodic; false if it lies beyond a wall.
+bool neighbourBucket(int& j, double& shift, int n, bool periodic, double length) {
+  shift = 0;
+  if (j >= 0 && j < n) return true;
+  if (!periodic) return false;
+  shift = j < 0 ? -length : length;
+  j = (j + n) % n;
+  return true;
+}
+
+// Hash grid of side >= d over the box: any overlapping pair sits in neighbouring buckets.
+class PlacementGrid {
+ public:
+  explicit PlacementGrid(const EngineConfig& c)
+      : c_(c),
+        nbx_(std::max(1, static_cast<int>(c.width / c.diameter))),
+        nbz_(std::max(1, static_cast<int>(c.height / c.diameter))),
+        bucket_(static_cast<std::size_t>(nbx_) * nbz_) {}
+
+  // True if a disk at (x, z) overlaps none of the disks placed so far.
+  bool fits(const InitialCondition& ic, double x, double z) const {
+    const auto [ix, iz] = bucketOf(x, z);
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (overlapsBucket(ic, x, z, ix + dx, iz + dz)) return false;
+    return true;
+  }
+  void add(double x, double z, int i) {
+    const auto [ix, iz] = bucketOf(x, z);
+    bucket_[key(ix, iz)].push_back(i);
+  }
+
+ private:
+  std::pair<int, int> bucketOf(double x, double z) const {
+    return {std::min(nbx_ - 1, static_cast<int>(x / (c_.width / nbx_))),
+            std::min(nbz_ - 1, static_cast<int>(z / (c_.height / nbz_)))};
+  }
+  std::size_t key(int ix, int iz) const { return static_cast<std::size_t>(iz) * nbx_ + ix; }
+  bool overlapsBucket(const InitialCondition& ic, double x, double z, int jx, int jz) const {
+    double sx = 0, sz = 0;
+    if (!neighbourBucket(jx, sx, nbx_, c_.periodic_x, c_.width) ||
+        !neighbourBucket(jz, sz, nbz_, c_.periodic_z, c_.height))
+      return false;
+    const double d = c_.diameter;
+    for (int j : bucket_[key(jx, jz)]) {
+      const double rx = x - ic.x[j] - sx, rz = z - ic.z[j] - sz;
+      if (rx * rx + rz * rz < d * d) return true;
+    }
+    return false;
+  }
+
+  const EngineConfig& c_;
+  int nbx_, nbz_;
+  std::vector<std::vector<int>> bucket_;
+};
 
 void placeRandomly(InitialCondition& ic, int n, const EngineConfig& c, std::mt19937_64& rng) {
   const double d = c.diameter;
@@ -18,12 +76,7 @@ void placeRandomly(InitialCondition& ic, int n, const EngineConfig& c, std::mt19
   const double zlo = c.periodic_z ? 0.0 : 0.5 * d,
                zhi = c.periodic_z ? c.height : c.height - 0.5 * d;
   std::uniform_real_distribution<double> ux(xlo, xhi), uz(zlo, zhi);
-  // Hash grid of side d: any overlapping pair sits in neighbouring buckets.
-  const int nbx = std::max(1, static_cast<int>(c.width / d));
-  const int nbz = std::max(1, static_cast<int>(c.height / d));
-  const double bx = c.width / nbx, bz = c.height / nbz;
-  std::vector<std::vector<int>> bucket(static_cast<std::size_t>(nbx) * nbz);
-  auto key = [&](int ix, int iz) { return static_cast<std::size_t>(iz) * nbx + ix; };
+  PlacementGrid grid(c);
   const long max_attempts = 2000L * n + 100000L;
   long attempts = 0;
   for (int i = 0; i < n; ++i) {
@@ -34,33 +87,10 @@ void placeRandomly(InitialCondition& ic, int n, const EngineConfig& c, std::mt19
             "use initial.placement = \"lattice\" or a larger container",
             i, n));
       const double x = ux(rng), z = uz(rng);
-      const int ix = std::min(nbx - 1, static_cast<int>(x / bx));
-      const int iz = std::min(nbz - 1, static_cast<int>(z / bz));
-      bool free = true;
-      for (int dz = -1; dz <= 1 && free; ++dz) {
-        for (int dx = -1; dx <= 1 && free; ++dx) {
-          int jx = ix + dx, jz = iz + dz;
-          double sx = 0, sz = 0;
-          if (jx < 0 || jx >= nbx) {
-            if (!c.periodic_x) continue;
-            sx = jx < 0 ? -c.width : c.width;
-            jx = (jx + nbx) % nbx;
-          }
-          if (jz < 0 || jz >= nbz) {
-            if (!c.periodic_z) continue;
-            sz = jz < 0 ? -c.height : c.height;
-            jz = (jz + nbz) % nbz;
-          }
-          for (int j : bucket[key(jx, jz)]) {
-            const double rx = x - ic.x[j] - sx, rz = z - ic.z[j] - sz;
-            if (rx * rx + rz * rz < d * d) free = false;
-          }
-        }
-      }
-      if (!free) continue;
+      if (!grid.fits(ic, x, z)) continue;
       ic.x.push_back(x);
       ic.z.push_back(z);
-      bucket[key(ix, iz)].push_back(i);
+      grid.add(x, z, i);
       break;
     }
   }
