@@ -9,6 +9,7 @@
 #include "coarse_grain/PeriodDoublingSeries.hpp"
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
+#include "coarse_grain/StatePhaseAverager.hpp"
 #include "coarse_grain/WaveFront.hpp"
 
 namespace granwave {
@@ -34,6 +35,12 @@ struct FieldsAnalysis {
   std::vector<double> front_height, front_peak;  // [phase]
   std::vector<FrontEpisode> fronts;
   PatternResult patterns;  // filled by the caller from a PatternSampler (may be unavailable)
+  // Conditioned on the layer's state (StatePhaseAverager): windows of 12 cycles counted in
+  // each state (-1: not measured), and the fields of each state that has at least as many
+  // windows as blocks (state_period 1 or 2; 0 in the whole-run analysis).
+  int state_windows[2] = {-1, -1};
+  int state_period = 0;
+  std::vector<FieldsAnalysis> states;
   double phaseTime(int phase) const { return phase / (samples_per_cycle * context.frequency); }
   double plateHeight(int phase) const;
 };
@@ -42,5 +49,13 @@ struct FieldsAnalysis {
 // short).
 FieldsAnalysis analyseFields(const PhaseAverager& averager, const FieldsContext& context,
                              const FrontOptions& front_options = {}, int min_count = 3);
+
+// The same from any set of sums laid out as `config` says.
+FieldsAnalysis analyseAccumulated(const PhaseAccumulator& sums, const PhaseAveragerConfig& config,
+                                  int discarded, int pooled, const FieldsContext& context,
+                                  const FrontOptions& front_options = {}, int min_count = 3);
+
+// Fills a.state_windows and a.states from a state-conditioned averager.
+void addStateFields(FieldsAnalysis& a, const StatePhaseAverager& states);
 
 }  // namespace granwave

@@ -113,12 +113,20 @@ void writePatterns(h5::File& f, const PatternResult& pr) {
   }
 }
 
-// The period-2 state window by window (/period_doubling, docs/classification.md, "Period").
+// The period-2 state window by window (/period_doubling, docs/classification.md, "Layer
+// state over time"): strengths, noise thresholds and the episodes (first cycle, cycles,
+// period as rows of three).
 void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
   if (pd.f2_strength.empty()) return;
   const std::string g = "/period_doubling";
   f.createGroup(g);
   f.writeDataset(g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()});
+  f.writeDataset(g + "/noise_strength", pd.noise_strength, {pd.noise_strength.size()});
+  f.writeDataset(g + "/threshold", pd.threshold, {pd.threshold.size()});
+  std::vector<std::int64_t> episodes;
+  for (const StateEpisode& e : pd.episodes)
+    episodes.insert(episodes.end(), {e.first_cycle, e.cycles, e.period});
+  f.writeDataset(g + "/episodes", episodes, {pd.episodes.size(), 3});
   f.writeAttribute<std::int64_t>(g, "window_cycles", pd.window_cycles);
   f.writeAttribute<std::int64_t>(g, "first_cycle", pd.first_cycle);
   f.writeAttribute<double>(g, "period2_share", pd.period2_share);
@@ -126,6 +134,93 @@ void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
   f.writeAttribute<double>(g, "share_high", pd.share_high);
   f.writeAttribute<double>(g, "effective_windows", pd.effective_windows);
   f.writeAttribute<std::int64_t>(g, "switches", pd.switches);
+}
+
+// Profiles, per-block profiles, phases and fronts of `a` under `root` ("" for the whole run;
+// readParticleFields reads the same layout).
+void writeProfilesAndFronts(h5::File& f, const std::string& root, const FieldsAnalysis& a) {
+  const PhaseFields& p = a.pooled;
+  const std::size_t P = p.phases, Z = p.nz, B = a.per_block.size();
+  f.createGroup(root + "/profiles");
+  put(f, root + "/profiles/temperature", p.profile_temperature, {P, Z}, "J");
+  put(f, root + "/profiles/velocity_z", p.profile_velocity_z, {P, Z}, "m s-1");
+  put(f, root + "/profiles/rms_velocity_x", p.profile_rms_velocity_x, {P, Z}, "m s-1");
+  put(f, root + "/profiles/area_fraction", p.profile_area_fraction, {P, Z}, "1");
+
+  f.createGroup(root + "/blocks/profiles");
+  auto stack = [&](auto member) {
+    std::vector<double> v;
+    for (const PhaseFields& b : a.per_block)
+      v.insert(v.end(), (b.*member).begin(), (b.*member).end());
+    return v;
+  };
+  put(f, root + "/blocks/profiles/temperature", stack(&PhaseFields::profile_temperature), {B, P, Z},
+      "J");
+  put(f, root + "/blocks/profiles/velocity_z", stack(&PhaseFields::profile_velocity_z), {B, P, Z},
+      "m s-1");
+  put(f, root + "/blocks/profiles/rms_velocity_x", stack(&PhaseFields::profile_rms_velocity_x),
+      {B, P, Z}, "m s-1");
+  put(f, root + "/blocks/profiles/area_fraction", stack(&PhaseFields::profile_area_fraction),
+      {B, P, Z}, "1");
+
+  std::vector<double> time(P), phase(P), plate(P);
+  for (std::size_t k = 0; k < P; ++k) {
+    time[k] = a.phaseTime(static_cast<int>(k));
+    phase[k] = static_cast<double>(k) / a.samples_per_cycle;
+    plate[k] = a.plateHeight(static_cast<int>(k));
+  }
+  f.createGroup(root + "/phases");
+  put(f, root + "/phases/time", time, {P}, "s");
+  put(f, root + "/phases/phase", phase, {P}, "1");  // t/T, 0 .. cycles_per_window
+  put(f, root + "/phases/plate_height", plate, {P}, "m");
+  put(f, root + "/phases/center_of_mass_height", p.center_of_mass_height, {P}, "m");
+  put(f, root + "/phases/front_height", a.front_height, {P}, "m");
+  put(f, root + "/phases/front_peak_temperature", a.front_peak, {P}, "1");  // T~_g / T0
+
+  f.createGroup(root + "/fronts");
+  const std::size_t E = a.fronts.size();
+  auto column = [&](auto get) {
+    std::vector<double> v;
+    for (const FrontEpisode& e : a.fronts) v.push_back(get(e));
+    return v;
+  };
+  put(f, root + "/fronts/first_phase", column([](auto& e) { return double(e.first_phase); }), {E},
+      "1");
+  put(f, root + "/fronts/last_phase", column([](auto& e) { return double(e.last_phase); }), {E},
+      "1");
+  put(f, root + "/fronts/speed", column([](auto& e) { return e.speed; }), {E}, "m s-1");
+  put(f, root + "/fronts/speed_error", column([](auto& e) { return e.speed_error; }), {E}, "m s-1");
+  put(f, root + "/fronts/fit_error", column([](auto& e) { return e.fit_error; }), {E}, "m s-1");
+  put(f, root + "/fronts/block_spread", column([](auto& e) { return e.block_spread; }), {E},
+      "m s-1");
+  put(f, root + "/fronts/blocks_used", column([](auto& e) { return double(e.blocks_used); }), {E},
+      "1");
+  put(f, root + "/fronts/gas_velocity_ahead", column([](auto& e) { return e.gas_velocity_ahead; }),
+      {E}, "m s-1");
+  put(f, root + "/fronts/speed_relative", column([](auto& e) { return e.speed_relative; }), {E},
+      "m s-1");
+  put(f, root + "/fronts/peak_temperature", column([](auto& e) { return e.peak_temperature; }), {E},
+      "1");
+  put(f, root + "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }),
+      {E}, "m");
+  put(f, root + "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }),
+      {E}, "1");
+}
+
+// The fields conditioned on the layer's state (/states/period1, /states/period2; attributes
+// windows and pooled_cycles); /states has windows_period1 and windows_period2 (-1: not measured).
+void writeStates(h5::File& f, const FieldsAnalysis& a) {
+  if (a.state_windows[0] < 0) return;
+  f.createGroup("/states");
+  f.writeAttribute<std::int64_t>("/states", "windows_period1", a.state_windows[0]);
+  f.writeAttribute<std::int64_t>("/states", "windows_period2", a.state_windows[1]);
+  for (const FieldsAnalysis& s : a.states) {
+    const std::string root = fmt::format("/states/period{}", s.state_period);
+    f.createGroup(root);
+    writeProfilesAndFronts(f, root, s);
+    f.writeAttribute<std::int64_t>(root, "windows", a.state_windows[s.state_period - 1]);
+    f.writeAttribute<std::int64_t>(root, "pooled_cycles", s.pooled_cycles);
+  }
 }
 
 }  // namespace
@@ -139,7 +234,7 @@ std::string xdmfSidecarPath(const std::string& fields_path) {
 void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   const PhaseFields& p = a.pooled;
   const FieldGrid& g = a.grid;
-  const std::size_t P = p.phases, Z = p.nz, X = p.nx, B = a.per_block.size();
+  const std::size_t P = p.phases, Z = p.nz, X = p.nx;
   h5::AtomicFile af(path);
   h5::File& f = af.file();
 
@@ -158,63 +253,8 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   put(f, "/fields/temperature", p.temperature, {P, Z, X}, "J");
   put(f, "/fields/rotational_temperature", p.rotational_temperature, {P, Z, X}, "J");
 
-  f.createGroup("/profiles");
-  put(f, "/profiles/temperature", p.profile_temperature, {P, Z}, "J");
-  put(f, "/profiles/velocity_z", p.profile_velocity_z, {P, Z}, "m s-1");
-  put(f, "/profiles/rms_velocity_x", p.profile_rms_velocity_x, {P, Z}, "m s-1");
-  put(f, "/profiles/area_fraction", p.profile_area_fraction, {P, Z}, "1");
-
-  f.createGroup("/blocks/profiles");
-  auto stack = [&](auto member) {
-    std::vector<double> v;
-    for (const PhaseFields& b : a.per_block)
-      v.insert(v.end(), (b.*member).begin(), (b.*member).end());
-    return v;
-  };
-  put(f, "/blocks/profiles/temperature", stack(&PhaseFields::profile_temperature), {B, P, Z}, "J");
-  put(f, "/blocks/profiles/velocity_z", stack(&PhaseFields::profile_velocity_z), {B, P, Z},
-      "m s-1");
-  put(f, "/blocks/profiles/rms_velocity_x", stack(&PhaseFields::profile_rms_velocity_x), {B, P, Z},
-      "m s-1");
-  put(f, "/blocks/profiles/area_fraction", stack(&PhaseFields::profile_area_fraction), {B, P, Z},
-      "1");
-
-  std::vector<double> time(P), phase(P), plate(P);
-  for (std::size_t k = 0; k < P; ++k) {
-    time[k] = a.phaseTime(static_cast<int>(k));
-    phase[k] = static_cast<double>(k) / a.samples_per_cycle;
-    plate[k] = a.plateHeight(static_cast<int>(k));
-  }
-  f.createGroup("/phases");
-  put(f, "/phases/time", time, {P}, "s");
-  put(f, "/phases/phase", phase, {P}, "1");  // t/T, 0 .. cycles_per_window
-  put(f, "/phases/plate_height", plate, {P}, "m");
-  put(f, "/phases/center_of_mass_height", p.center_of_mass_height, {P}, "m");
-  put(f, "/phases/front_height", a.front_height, {P}, "m");
-  put(f, "/phases/front_peak_temperature", a.front_peak, {P}, "1");  // T~_g / T0
-
-  f.createGroup("/fronts");
-  const std::size_t E = a.fronts.size();
-  auto column = [&](auto get) {
-    std::vector<double> v;
-    for (const FrontEpisode& e : a.fronts) v.push_back(get(e));
-    return v;
-  };
-  put(f, "/fronts/first_phase", column([](auto& e) { return double(e.first_phase); }), {E}, "1");
-  put(f, "/fronts/last_phase", column([](auto& e) { return double(e.last_phase); }), {E}, "1");
-  put(f, "/fronts/speed", column([](auto& e) { return e.speed; }), {E}, "m s-1");
-  put(f, "/fronts/speed_error", column([](auto& e) { return e.speed_error; }), {E}, "m s-1");
-  put(f, "/fronts/fit_error", column([](auto& e) { return e.fit_error; }), {E}, "m s-1");
-  put(f, "/fronts/block_spread", column([](auto& e) { return e.block_spread; }), {E}, "m s-1");
-  put(f, "/fronts/blocks_used", column([](auto& e) { return double(e.blocks_used); }), {E}, "1");
-  put(f, "/fronts/gas_velocity_ahead", column([](auto& e) { return e.gas_velocity_ahead; }), {E},
-      "m s-1");
-  put(f, "/fronts/speed_relative", column([](auto& e) { return e.speed_relative; }), {E}, "m s-1");
-  put(f, "/fronts/peak_temperature", column([](auto& e) { return e.peak_temperature; }), {E}, "1");
-  put(f, "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }), {E},
-      "m");
-  put(f, "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }), {E},
-      "1");
+  writeProfilesAndFronts(f, "", a);
+  writeStates(f, a);
 
   for (std::size_t ph = 0; ph < P; ++ph) {
     const std::string grp = fmt::format("/xdmf/p{:04d}", ph);

@@ -35,6 +35,27 @@ void PhaseAccumulator::add(int block, int phase, double x, double z, double vx, 
                                                                                         omega);
 }
 
+void PhaseAccumulator::mergeBlock(const PhaseAccumulator& from, int from_block, int to_block,
+                                  int shift) {
+  const int cells = grid_.cells();
+  for (int k = 0; k < phases_; ++k) {
+    const int to = (k + shift) % phases_;
+    const std::size_t i = static_cast<std::size_t>(from_block) * phases_ + k;
+    const std::size_t j = static_cast<std::size_t>(to_block) * phases_ + to;
+    snapshots_[j] += from.snapshots_[i];
+    z_sum_[j] += from.z_sum_[i];
+    particles_[j] += from.particles_[i];
+    for (int c = 0; c < cells; ++c) sums_[j * cells + c].merge(from.sums_[i * cells + c]);
+  }
+}
+
+void PhaseAccumulator::clear() {
+  std::fill(sums_.begin(), sums_.end(), CellSums{});
+  std::fill(snapshots_.begin(), snapshots_.end(), 0.0);
+  std::fill(z_sum_.begin(), z_sum_.end(), 0.0);
+  std::fill(particles_.begin(), particles_.end(), 0.0);
+}
+
 CellSums PhaseAccumulator::pooled(int phase, int cell) const {
   CellSums s;
   for (int b = 0; b < blocks_; ++b) s.merge(at(b, phase, cell));

@@ -64,6 +64,11 @@ class PhaseAccumulator {
   CellSums pooled(int phase, int cell) const;
   double pooledSnapshots(int phase) const;
 
+  // Adds block `from_block` of `from` (same grid and phases) to block `to_block`, phase k of
+  // `from` landing on phase (k + shift) mod phases (a period-2 episode of the other parity).
+  void mergeBlock(const PhaseAccumulator& from, int from_block, int to_block, int shift);
+  void clear();  // every sum back to zero
+
   // Checkpoints: the sums as stored; restore() requires the same grid, phases and blocks.
   void save(h5::File& file, const std::string& group) const;
   void restore(const h5::File& file, const std::string& group);

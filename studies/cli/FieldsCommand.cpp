@@ -96,10 +96,12 @@ int runFields(const FieldsOptions& opt) {
   PhaseAveragerConfig cfg = phaseAveragerConfig(scene, P, opt.blocks, discard);
   cfg.total_cycles = static_cast<int>(run.recordCount() / M);
   PhaseAverager averager(cfg);
+  StatePhaseAverager states(cfg);
   PatternSampler patterns({M});
   for (std::size_t i = 0; i < run.frameCount(); ++i) {
     const Snapshot s = run.frame(i);
     averager.observe(s);
+    states.observe(s);
     patterns.observe(s);
   }
 
@@ -108,6 +110,7 @@ int runFields(const FieldsOptions& opt) {
   FieldsAnalysis a = analyseFields(
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
   a.context.period_doubling = period_doubling;
+  addStateFields(a, states);
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
                                 scene.particles.diameter, scene.container.periodic_x);
   writeFieldsFile(out, a);

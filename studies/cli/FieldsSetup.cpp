@@ -41,6 +41,24 @@ FieldsContext fieldsContext(const Scene& s, const std::string& source,
   return c;
 }
 
+namespace {
+// The state-conditioned fields: windows in each state and their impact fronts.
+std::string formatStateFields(const FieldsAnalysis& a) {
+  std::string r =
+      fmt::format("by state        period 1 in {} and period 2 in {} windows of 12 cycles",
+                  a.state_windows[0], a.state_windows[1]);
+  for (const FieldsAnalysis& s : a.states) {
+    r += fmt::format("; period-{} fronts", s.state_period);
+    int n = 0;
+    for (const FrontEpisode& e : s.fronts)
+      if (e.from_impact)
+        r += fmt::format("{} {:.2f} +- {:.2f} m/s", n++ ? "," : "", e.speed, e.speed_error);
+    if (n == 0) r += " none";
+  }
+  return r + "\n";
+}
+}  // namespace
+
 std::string formatFieldsSummary(const FieldsAnalysis& a) {
   std::string r;
   r += fmt::format("fields          {} x {} cells of {:.3g} m, {} phases ({} cycles x M = {})\n",
@@ -48,6 +66,7 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
                    a.samples_per_cycle);
   r += fmt::format("pooled          {} steady cycles in {} blocks, {} transient cycles discarded\n",
                    a.pooled_cycles, a.blocks, a.discarded_cycles);
+  if (a.state_windows[0] >= 0) r += formatStateFields(a);
   int impact_fronts = 0;
   for (const FrontEpisode& e : a.fronts) impact_fronts += e.from_impact;
   if (impact_fronts == 0)

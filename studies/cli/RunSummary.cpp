@@ -46,10 +46,13 @@ bool summarisePeriodDoubling(const RunSummaryInput& in, PeriodDoublingSeries& ou
 std::string formatPeriodDoubling(const PeriodDoublingSeries& s) {
   int n = 0;
   for (int v : s.period2) n += v;
+  double threshold = 0;
+  for (double t : s.threshold) threshold = std::max(threshold, t);
   return fmt::format(
-      "period-2 state  f/2 strength above 0.1 in {} of {} windows of {} cycles (share {:.2f}, "
-      "95 % interval {:.2f}-{:.2f}, {:.1f} effective windows), {} switch(es)\n",
-      n, s.period2.size(), s.window_cycles, s.period2_share, s.share_low, s.share_high,
+      "period-2 state  f/2 strength above its noise threshold (0.1 to {:.3f}) in {} of {} "
+      "windows of {} cycles (share {:.2f}, 95 % interval {:.2f}-{:.2f}, {:.1f} effective "
+      "windows), {} switch(es)\n",
+      threshold, n, s.period2.size(), s.window_cycles, s.period2_share, s.share_low, s.share_high,
       s.effective_windows, s.switches);
 }
 

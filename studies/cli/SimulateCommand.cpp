@@ -81,10 +81,12 @@ class SimulationRun {
     if (!opt.fields.empty()) {
       averager_ = std::make_unique<PhaseAverager>(
           phaseAveragerConfig(scene_, opt.fields_period, opt.fields_blocks, -1));
+      states_ = std::make_unique<StatePhaseAverager>(averager_->config());
       patterns_ =
           std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
       accumulating_.emplace_back("phase_averager", averager_.get());
       accumulating_.emplace_back("patterns", patterns_.get());
+      accumulating_.emplace_back("state_averager", states_.get());
     }
   }
 
@@ -120,6 +122,7 @@ class SimulationRun {
     if (averager_) {
       sim_->addObserver(averager_.get());
       sim_->addObserver(patterns_.get());
+      sim_->addObserver(states_.get());
     }
     if (!opt_.quiet) sim_->addObserver(&progress_);
     initial_energy_ = resumed_ ? loaded_.ledger.initial_energy : totalEnergy(sim_->snapshot().obs);
@@ -292,6 +295,7 @@ class SimulationRun {
     FieldsAnalysis a = analyseFields(*averager_, fieldsContext(scene_, "live: " + opt_.scene_path,
                                                                sceneToToml(scene_), layer_period));
     summarisePeriodDoubling(in, a.context.period_doubling);
+    addStateFields(a, *states_);
     a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
                                   scene_.particles.diameter, scene_.container.periodic_x);
     return a;
@@ -305,6 +309,7 @@ class SimulationRun {
   CenterOfMassSeries com_;
   std::unique_ptr<PhaseAverager> averager_;
   std::unique_ptr<PatternSampler> patterns_;
+  std::unique_ptr<StatePhaseAverager> states_;
   NamedCheckpointables accumulating_{{"center_of_mass", &com_}};
   ProgressReporter progress_;
 

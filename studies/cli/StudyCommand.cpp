@@ -146,7 +146,7 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   if (file_jobs < 0) file.fail("study", "jobs", "expected 0 (one per core) or more runs at a time");
   file.rejectUnknownKeys();
   const int jobs = jobsOf(opt, file_jobs, mpi);
-  const std::vector<RunRequest> plan = study->plan();
+  std::vector<RunRequest> plan = study->plan();
 
   std::string outdir = opt.output;
   if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
@@ -173,8 +173,16 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
     return r.request.kind == RunKind::Particles ? checkpointedCost(r.runPath())
                                                 : std::pair<double, double>{0.0, 0.0};
   };
-  const RunSet runs(runAll(plan, cache, scheduling, mpi.size() > 1 ? &remote : nullptr));
+  RunSet runs(runAll(plan, cache, scheduling, mpi.size() > 1 ? &remote : nullptr));
   requireFinished(runs, cache_dir);
+  // Follow-up rounds (more seeds for an undecided verdict) run on this rank: the worker ranks
+  // have left their loop with the first round. Finished runs come from the cache.
+  for (std::vector<RunRequest> more = study->followUp(runs); !more.empty();
+       more = study->followUp(runs)) {
+    plan.insert(plan.end(), more.begin(), more.end());
+    runs = RunSet(runAll(plan, cache, scheduling, nullptr));
+    requireFinished(runs, cache_dir);
+  }
   writeResults(results, *study, file, runs, build_id);
   if (!opt.no_report)
     renderReport(results, html, (std::filesystem::path(outdir) / "report.log").string());

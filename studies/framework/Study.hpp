@@ -19,6 +19,7 @@ class RunSet {
  public:
   explicit RunSet(std::vector<RunRecord> records);
   const RunRecord& get(const std::string& label) const;  // throws if never planned
+  bool has(const std::string& label) const { return index_.count(label) > 0; }
   const std::vector<RunRecord>& all() const { return records_; }
 
  private:
@@ -31,6 +32,10 @@ class Study {
   virtual ~Study() = default;
   virtual std::string title() const = 0;
   virtual std::vector<RunRequest> plan() const = 0;
+  // Runs to add once `runs` (the plan and every earlier follow-up, finished) are known: a
+  // study whose verdict is not yet decided asks for more seeds here, up to its cap. Empty when
+  // nothing more is needed; the default asks for nothing.
+  virtual std::vector<RunRequest> followUp(const RunSet& /*runs*/) const { return {}; }
   // Writes the measured numbers under /results of `results` and fills `report`.
   virtual void analyse(const RunSet& runs, h5::File& results, Report& report) const = 0;
 };

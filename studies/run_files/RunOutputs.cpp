@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -24,24 +25,25 @@ int Profiles::phaseIndex(double t) const {
   return best;
 }
 
-ParticleFields readParticleFields(const std::string& path) {
-  const h5::File f = h5::File::openReadOnly(path);
+namespace {
+// The profiles and fronts under `root` ("" or /states/periodN) and the run's parameters.
+ParticleFields readFieldsUnder(const h5::File& f, const std::string& root) {
   ParticleFields r;
   r.z = f.readDataset<double>("/grid/z");
   r.nz = static_cast<int>(r.z.size());
-  r.phase = f.readDataset<double>("/phases/phase");
+  r.phase = f.readDataset<double>(root + "/phases/phase");
   r.phases = static_cast<int>(r.phase.size());
-  r.plate = f.readDataset<double>("/phases/plate_height");
-  r.com = f.readDataset<double>("/phases/center_of_mass_height");
-  r.front = f.readDataset<double>("/phases/front_height");
-  r.temperature = f.readDataset<double>("/profiles/temperature");
-  r.area_fraction = f.readDataset<double>("/profiles/area_fraction");
-  r.velocity_z = f.readDataset<double>("/profiles/velocity_z");
-  r.rms_velocity_x = f.readDataset<double>("/profiles/rms_velocity_x");
-  r.block_temperature = f.readDataset<double>("/blocks/profiles/temperature");
-  r.block_area_fraction = f.readDataset<double>("/blocks/profiles/area_fraction");
-  r.block_velocity_z = f.readDataset<double>("/blocks/profiles/velocity_z");
-  r.block_rms_vx = f.readDataset<double>("/blocks/profiles/rms_velocity_x");
+  r.plate = f.readDataset<double>(root + "/phases/plate_height");
+  r.com = f.readDataset<double>(root + "/phases/center_of_mass_height");
+  r.front = f.readDataset<double>(root + "/phases/front_height");
+  r.temperature = f.readDataset<double>(root + "/profiles/temperature");
+  r.area_fraction = f.readDataset<double>(root + "/profiles/area_fraction");
+  r.velocity_z = f.readDataset<double>(root + "/profiles/velocity_z");
+  r.rms_velocity_x = f.readDataset<double>(root + "/profiles/rms_velocity_x");
+  r.block_temperature = f.readDataset<double>(root + "/blocks/profiles/temperature");
+  r.block_area_fraction = f.readDataset<double>(root + "/blocks/profiles/area_fraction");
+  r.block_velocity_z = f.readDataset<double>(root + "/blocks/profiles/velocity_z");
+  r.block_rms_vx = f.readDataset<double>(root + "/blocks/profiles/rms_velocity_x");
   const std::string par = "/parameters";
   r.T0 = f.readAttribute<double>(par, "T0");
   r.diameter = f.readAttribute<double>(par, "diameter");
@@ -50,15 +52,16 @@ ParticleFields readParticleFields(const std::string& path) {
   r.amplitude = f.readAttribute<double>(par, "amplitude");
   r.cycles_per_window = static_cast<int>(f.readAttribute<std::int64_t>(par, "cycles_per_window"));
   r.layer_period = static_cast<int>(f.readAttribute<std::int64_t>(par, "layer_period"));
-  r.pooled_cycles = static_cast<int>(f.readAttribute<std::int64_t>(par, "pooled_cycles"));
+  r.pooled_cycles =
+      static_cast<int>(f.readAttribute<std::int64_t>(root.empty() ? par : root, "pooled_cycles"));
   r.blocks = static_cast<int>(f.readAttribute<std::int64_t>(par, "blocks"));
-  const auto first = f.readDataset<double>("/fronts/first_phase");
-  const auto speed = f.readDataset<double>("/fronts/speed");
-  const auto error = f.readDataset<double>("/fronts/speed_error");
-  const auto peak = f.readDataset<double>("/fronts/peak_temperature");
-  const auto gas = f.readDataset<double>("/fronts/gas_velocity_ahead");
-  const auto rel = f.readDataset<double>("/fronts/speed_relative");
-  const auto impact = f.readDataset<double>("/fronts/from_impact");
+  const auto first = f.readDataset<double>(root + "/fronts/first_phase");
+  const auto speed = f.readDataset<double>(root + "/fronts/speed");
+  const auto error = f.readDataset<double>(root + "/fronts/speed_error");
+  const auto peak = f.readDataset<double>(root + "/fronts/peak_temperature");
+  const auto gas = f.readDataset<double>(root + "/fronts/gas_velocity_ahead");
+  const auto rel = f.readDataset<double>(root + "/fronts/speed_relative");
+  const auto impact = f.readDataset<double>(root + "/fronts/from_impact");
   for (std::size_t e = 0; e < speed.size(); ++e) {
     Front fr;
     fr.first_phase = static_cast<int>(first[e]);
@@ -70,6 +73,45 @@ ParticleFields readParticleFields(const std::string& path) {
     fr.relative = rel[e];
     fr.from_impact = impact[e] > 0.5;
     r.fronts.push_back(fr);
+  }
+  return r;
+}
+}  // namespace
+
+ParticleFields readParticleFields(const std::string& path) {
+  return readFieldsUnder(h5::File::openReadOnly(path), "");
+}
+
+std::optional<ParticleFields> readStateFields(const std::string& path, int period) {
+  const h5::File f = h5::File::openReadOnly(path);
+  const std::string root = "/states/period" + std::to_string(period);
+  if (!f.isGroup(root)) return std::nullopt;
+  ParticleFields r = readFieldsUnder(f, root);
+  r.layer_period = period;
+  return r;
+}
+
+StateSeries readStateSeries(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  StateSeries r;
+  if (!f.isGroup("/period_doubling")) return r;
+  const std::string g = "/period_doubling";
+  r.available = true;
+  r.period2_share = f.readAttribute<double>(g, "period2_share");
+  r.share_low = f.readAttribute<double>(g, "share_low");
+  r.share_high = f.readAttribute<double>(g, "share_high");
+  r.window_cycles = static_cast<int>(f.readAttribute<std::int64_t>(g, "window_cycles"));
+  r.effective_windows = f.readAttribute<double>(g, "effective_windows");
+  r.layer_period = static_cast<int>(f.readAttribute<std::int64_t>("/parameters", "layer_period"));
+  r.f2_strength = f.readDataset<double>(g + "/f2_strength");
+  if (f.exists(g + "/threshold")) r.threshold = f.readDataset<double>(g + "/threshold");
+  for (std::size_t w = 0; w < r.f2_strength.size() && w < r.threshold.size(); ++w)
+    r.period2_windows += r.f2_strength[w] > r.threshold[w];
+  if (f.isGroup("/states")) {
+    r.state_windows[0] =
+        static_cast<int>(f.readAttribute<std::int64_t>("/states", "windows_period1"));
+    r.state_windows[1] =
+        static_cast<int>(f.readAttribute<std::int64_t>("/states", "windows_period2"));
   }
   return r;
 }

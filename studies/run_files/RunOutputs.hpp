@@ -4,6 +4,7 @@
 // file, the LAMMPS deck's centre of mass, and (HydroRunFile.hpp) the hydro solver's fields
 // (HYDRO.h5, docs/hydro.md).
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -82,7 +83,24 @@ struct LammpsTrajectory {
   double last_step = 0;
 };
 
+// The layer's state window by window (FIELDS.h5 /period_doubling and /states;
+// docs/classification.md, "Layer state over time").
+struct StateSeries {
+  bool available = false;
+  int window_cycles = 12, period2_windows = 0;
+  int layer_period = 0;                                     // the run's period (runPeriod)
+  double period2_share = 0, share_low = 0, share_high = 1;  // 95 % Wilson, n_eff
+  double effective_windows = 0;
+  std::vector<double> f2_strength, threshold;
+  int state_windows[2] = {-1, -1};  // windows the state-conditioned fields pooled (-1: none)
+  int windows() const { return static_cast<int>(f2_strength.size()); }
+};
+
 ParticleFields readParticleFields(const std::string& fields_path);
+// The fields of the period-1 or period-2 episodes alone (FIELDS.h5 /states/periodN), if the
+// run had enough windows in that state.
+std::optional<ParticleFields> readStateFields(const std::string& fields_path, int period);
+StateSeries readStateSeries(const std::string& fields_path);
 LammpsTrajectory readLammpsTrajectory(const std::string& path);
 LayerPatterns readLayerPatterns(const std::string& fields_path);
 Frame readLastFrame(const std::string& run_path);

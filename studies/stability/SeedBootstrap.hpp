@@ -29,6 +29,10 @@ struct SeedPatterns {
   std::vector<std::vector<std::string>> messages[2];
 };
 
+// The share of resamples from which a verdict counts as decided (the wave-fronts study's
+// [verdicts] agreement default; docs/studies.md, "Verdict stability").
+inline constexpr double kDecidedAgreement = 0.9;
+
 struct SeedBootstrap {
   int resamples = 0;
   // Feature key -> share of resamples with the full grid's verdict.

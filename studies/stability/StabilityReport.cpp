@@ -243,15 +243,18 @@ void featuresSection(const StabilityResults& r, ReportSection& section) {
       "States are the most frequent over the seeds, with the number of seeds that gave them. "
       "Stability: the share of {} bootstrap resamples of the seeds (drawn with replacement, "
       "voted again) that give the same verdict; near 100 % no choice of seeds changes it, "
-      "near 50 % it is a coin flip.",
-      r.bootstrap.resamples);
+      "near 50 % it is a coin flip. A verdict is decided from {:.0f} % on, else undecided (this "
+      "study's seeds are fixed before the runs: add seeds to the study file to decide it).",
+      r.bootstrap.resamples, 100 * kDecidedAgreement);
   t.columns = {"feature (paper)", "particles (this grid)", "reproduced", "stability over seeds"};
   for (const FeatureCheck& c : r.features) {
     const auto it = r.bootstrap.verdict_agreement.find(c.key);
-    t.rows.push_back({c.feature, c.observed, c.verdict,
-                      it == r.bootstrap.verdict_agreement.end()
-                          ? std::string("–")
-                          : fmt::format("{:.0f} %", 100 * it->second)});
+    t.rows.push_back(
+        {c.feature, c.observed, c.verdict,
+         it == r.bootstrap.verdict_agreement.end()
+             ? std::string("–")
+             : fmt::format("{:.0f} % ({})", 100 * it->second,
+                           it->second >= kDecidedAgreement ? "decided" : "undecided")});
   }
   section.add(std::move(t));
   section.add(differencesTable(r));

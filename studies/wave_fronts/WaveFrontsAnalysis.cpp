@@ -241,6 +241,7 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
   r.cost = costAccuracy(c, runs, r.paper[1]);
   r.failures = analyseFailures(c, runs);
   for (int law = 0; law < kLaws; ++law) r.models[law] = analyseModels(c, runs, law);
+  for (int law = 0; law < kLaws; ++law) r.states[law] = analyseStates(c, runs, law);
   if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0]);
   return r;
 }
@@ -252,6 +253,7 @@ void writeWaveFrontsResults(h5::File& f, const WaveFrontsConfig& c, const WaveFr
   writeCost(f, c, r);
   writeFailures(f, kRoot, c, r.failures);
   for (int law = 0; law < kLaws; ++law) writeModels(f, kRoot, law, r.models[law]);
+  for (int law = 0; law < kLaws; ++law) writeStates(f, kRoot, law, r.states[law]);
   if (r.lammps) writeLammps(f, kRoot, *r.lammps);
 }
 

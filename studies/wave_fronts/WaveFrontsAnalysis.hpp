@@ -100,12 +100,61 @@ struct ModelCandidate {
   bool reproduces = false, powerless = false;
 };
 
+// How stable a verdict is against the choice of seeds (docs/studies.md, "Verdict
+// stability"): the share of bootstrap resamples of the seeds (same number, drawn with
+// replacement) that give the same verdict as all seeds. Decided when that share reaches
+// the study's [verdicts] agreement; otherwise seeds are added up to [particles] max_seeds,
+// and a verdict still short of it is reported as undecided.
+struct VerdictStability {
+  std::string verdict;  // the full set's ("none" if no candidate reproduces)
+  double agreement = NAN;
+  int seeds = 0, resamples = 0;
+  bool decided = false;
+  std::map<std::string, double> shares;  // every verdict the resamples gave, with its share
+};
+
 struct ModelHierarchy {
   Measurement reference;
   std::string reference_periods;
   int reference_period = 0;
   std::vector<ModelCandidate> candidates;
   std::string simplest;  // empty: none reproduces the particles
+  VerdictStability stability;
+};
+
+// One particle run of a model on one seed: its impact fronts and layer period.
+struct SeedRun {
+  bool ok = false;
+  ImpactFronts fronts;
+  int period = 0;
+};
+
+// What the model hierarchy is judged from, read once: per particle model tag ("", "constant
+// e ", "no rotation ") the runs of each seed in `seeds`, and the hydro candidates by run label.
+struct ModelInputs {
+  std::vector<int> seeds;
+  std::map<std::string, std::vector<SeedRun>> particles;
+  std::map<std::string, HydroOutcome> hydro;
+};
+
+// The paper's scene of one law, resolved by state (docs/studies.md, "State-resolved
+// statistics"): the share of seeds whose run has period 2 and the share of time in the
+// period-2 state, each with a 95 % Wilson interval (seeds: n = seeds; time: n = the sum of
+// the seeds' effective windows, seeds being independent); the impact fronts of the period-1
+// and period-2 episodes combined over seeds, and (wet law) r_x of each state's episodes
+// against the whole dry run of the same seed (mean over seeds, error: their standard error).
+struct StateShares {
+  int seeds = 0, seeds_period2 = 0;
+  double seed_share = NAN, seed_low = NAN, seed_high = NAN;
+  int windows = 0, windows_period2 = 0;
+  double effective_windows = 0;
+  double time_share = NAN, time_low = NAN, time_high = NAN;
+  double max_threshold = 0;  // largest window threshold met (floor 0.1)
+  Measurement front[2];      // period 1, period 2
+  int front_seeds[2] = {0, 0};
+  int state_windows[2] = {0, 0};  // windows pooled into each state's fields
+  Measurement r_x[2];
+  int r_x_seeds[2] = {0, 0};
 };
 
 // The dry layer with LAMMPS beside the event-driven engine (seed 1) and hydro (velocity-
@@ -134,6 +183,7 @@ struct WaveFrontsResults {
   CostAccuracy cost;
   FailureMap failures;
   ModelHierarchy models[2];
+  StateShares states[2];
   std::optional<LammpsComparison> lammps;
 };
 
@@ -149,7 +199,19 @@ double meanPhase(const std::vector<double>& phases);
 HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label);
 std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label);
 FailureMap analyseFailures(const WaveFrontsConfig& config, const RunSet& runs);
+// The seeds of the paper's scene that ran: the study's, then any added for an undecided
+// verdict (WaveFrontsVerdicts.cpp).
+std::vector<int> seedsOf(const WaveFrontsConfig& config, const RunSet& runs, int law);
+ModelInputs readModelInputs(const WaveFrontsConfig& config, const RunSet& runs, int law);
+// The hierarchy over the picked seeds (indices into inputs.seeds).
+ModelHierarchy judgeModels(const WaveFrontsConfig& config, const ModelInputs& inputs, int law,
+                           const std::vector<int>& pick);
+// judgeModels over every seed, with its stability.
 ModelHierarchy analyseModels(const WaveFrontsConfig& config, const RunSet& runs, int law);
+VerdictStability modelVerdictStability(const WaveFrontsConfig& config, const ModelInputs& inputs,
+                                       int law);
+StateShares analyseStates(const WaveFrontsConfig& config, const RunSet& runs, int law);
+void writeStates(h5::File& file, const std::string& root, int law, const StateShares& states);
 LammpsComparison analyseLammps(const WaveFrontsConfig& config, const RunSet& runs,
                                const PaperLaw& dry);
 void writeFailures(h5::File& file, const std::string& root, const WaveFrontsConfig& config,

@@ -15,20 +15,20 @@ namespace granwave {
 
 namespace {
 
-// A particle model over the study's seeds ("" the full model, "constant e ", "no rotation "):
-// the combined front speed, the periods of the seeds and their most frequent value (0: none).
-int overSeeds(const WaveFrontsConfig& c, const RunSet& runs, int law, const std::string& tag,
+// A particle model over the picked seeds (indices into inputs.seeds; a seed may be picked more
+// than once by the bootstrap): the combined front speed, the periods of the seeds and their
+// most frequent value (0: none; a tie goes to the smaller period).
+int overSeeds(const ModelInputs& in, const std::string& tag, const std::vector<int>& pick,
               Measurement& speed, std::string& periods) {
   std::vector<ImpactFronts> fronts;
   std::map<int, int> count;
   periods.clear();
-  for (int sd : c.seeds) {
-    auto p =
-        particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd)));
-    if (!p) continue;
-    fronts.push_back(impactFronts(p->fronts));
-    ++count[p->layer_period];
-    periods += (periods.empty() ? "" : ", ") + std::to_string(p->layer_period);
+  for (int i : pick) {
+    const SeedRun& r = in.particles.at(tag)[static_cast<std::size_t>(i)];
+    if (!r.ok) continue;
+    fronts.push_back(r.fronts);
+    ++count[r.period];
+    periods += (periods.empty() ? "" : ", ") + std::to_string(r.period);
   }
   speed = combineImpactFronts(fronts).all;
   int mode = 0, best = 0;
@@ -104,14 +104,15 @@ FailureMap analyseFailures(const WaveFrontsConfig& c, const RunSet& runs) {
   return out;
 }
 
-ModelHierarchy analyseModels(const WaveFrontsConfig& c, const RunSet& runs, int law) {
-  ModelHierarchy m;
-  m.reference_period = overSeeds(c, runs, law, "", m.reference, m.reference_periods);
+namespace {
+struct CandidateSpec {
+  std::string description, label;
+  bool hydro;
+};
+
+std::vector<CandidateSpec> candidateSpecs(const WaveFrontsConfig& c, int law) {
   using C = WaveFrontsConfig;
-  const struct {
-    std::string description, label;
-    bool hydro;
-  } candidates[] = {
+  return {
       {fmt::format("hydro, constant e = {:.3f}, Jenkins-Richman", c.e_eff[law]),
        C::hydroRun(law, "constant"), true},
       {"hydro, velocity-dependent closure, Jenkins-Richman", C::hydroRun(law, "velocity"), true},
@@ -121,14 +122,38 @@ ModelHierarchy analyseModels(const WaveFrontsConfig& c, const RunSet& runs, int 
       {fmt::format("particles, constant e = {:.3f}", c.e_eff[law]), "constant e ", false},
       {"particles, no rotation (mu = 0)", "no rotation ", false},
   };
-  for (const auto& cand : candidates) {
+}
+}  // namespace
+
+ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  ModelInputs in;
+  in.seeds = seedsOf(c, runs, law);
+  for (const std::string tag : {"", "constant e ", "no rotation "})
+    for (int sd : in.seeds) {
+      SeedRun r;
+      if (auto p = particleFields(
+              runs, WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd)))) {
+        r = {true, impactFronts(p->fronts), p->layer_period};
+      }
+      in.particles[tag].push_back(r);
+    }
+  for (const CandidateSpec& cand : candidateSpecs(c, law))
+    if (cand.hydro) in.hydro[cand.label] = hydroOutcome(runs, cand.label);
+  return in;
+}
+
+ModelHierarchy judgeModels(const WaveFrontsConfig& c, const ModelInputs& in, int law,
+                           const std::vector<int>& pick) {
+  ModelHierarchy m;
+  m.reference_period = overSeeds(in, "", pick, m.reference, m.reference_periods);
+  for (const CandidateSpec& cand : candidateSpecs(c, law)) {
     ModelCandidate mc;
     mc.description = cand.description;
     mc.key = cand.hydro ? cand.label : "ED " + cand.label;
     while (!mc.key.empty() && mc.key.back() == ' ') mc.key.pop_back();
     int period = 0;
     if (cand.hydro) {
-      const HydroOutcome h = hydroOutcome(runs, cand.label);
+      const HydroOutcome& h = in.hydro.at(cand.label);
       mc.failed = !h.fields;
       mc.failure = "failed: " + shortReason(h.failure);
       if (h.fields) {
@@ -137,7 +162,7 @@ ModelHierarchy analyseModels(const WaveFrontsConfig& c, const RunSet& runs, int 
         mc.periods = period ? std::to_string(period) : "none";
       }
     } else {
-      period = overSeeds(c, runs, law, cand.label, mc.speed, mc.periods);
+      period = overSeeds(in, cand.label, pick, mc.speed, mc.periods);
       mc.failed = mc.periods.empty();
       mc.failure = "failed: every seed";
     }
@@ -213,9 +238,18 @@ void writeFailures(h5::File& f, const std::string& root, const WaveFrontsConfig&
 }
 
 void writeModels(h5::File& f, const std::string& root, int law, const ModelHierarchy& m) {
+  const std::string g = fmt::format("{}/models/{}", root, kLawNames[law]);
   for (const ModelCandidate& c : m.candidates)
-    if (!c.failed)
-      putMeasurement(f, fmt::format("{}/models/{}", root, kLawNames[law]), c.key, c.speed);
+    if (!c.failed) putMeasurement(f, g, c.key, c.speed);
+  // The verdict and its stability over seeds (docs/studies.md, "Verdict stability").
+  const VerdictStability& v = m.stability;
+  f.createGroup(g);
+  f.writeStringAttribute(g, "simplest", v.verdict);
+  f.writeStringAttribute(g, "verdict", v.decided ? v.verdict : "undecided");
+  putValue(f, g, "verdict_agreement", v.agreement);
+  putValue(f, g, "verdict_seeds", v.seeds);
+  putValue(f, g, "verdict_resamples", v.resamples);
+  putValue(f, g, "verdict_decided", v.decided ? 1 : 0);
 }
 
 void writeLammps(h5::File& f, const std::string& root, const LammpsComparison& l) {

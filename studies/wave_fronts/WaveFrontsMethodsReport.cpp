@@ -109,6 +109,24 @@ std::string hydroPeriod(const ModelHierarchy& m, const std::string& key) {
 
 // Does the continuum double where the particles do, smooth disks against rough particles
 // (issue: the particles' friction carries about half their dissipation)?
+// "simplest model that reproduces it: X (same verdict in 97 % of 200 bootstrap resamples of 5
+// seeds)", or undecided with the verdicts the resamples gave.
+std::string verdictText(const VerdictStability& v) {
+  const std::string said = v.verdict == "none" ? "no simpler model reproduces the particles"
+                                               : "simplest model that reproduces it: " + v.verdict;
+  if (v.decided)
+    return fmt::format("{} (same verdict in {:.0f} % of {} bootstrap resamples of {} seeds)", said,
+                       100 * v.agreement, v.resamples, v.seeds);
+  std::string alternatives;
+  for (const auto& [verdict, share] : v.shares)
+    alternatives +=
+        fmt::format("{}'{}' {:.0f} %", alternatives.empty() ? "" : ", ", verdict, 100 * share);
+  return fmt::format(
+      "undecided over {} seeds: all seeds say '{}', but only {:.0f} % of {} bootstrap resamples "
+      "agree ({})",
+      v.seeds, v.verdict, 100 * v.agreement, v.resamples, alternatives);
+}
+
 std::string doublingVerdict(const WaveFrontsResults& r) {
   std::string text = "Period doubling in the continuum: ";
   std::string split[2][2];  // [model smooth, rough][law]
@@ -191,7 +209,10 @@ void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& r
       "restitution), combined over seeds. Candidates from the simplest up; a candidate "
       "reproduces the reference if its mean impact-front speed lies within 2 combined sigma and "
       "its centre-of-mass period is the reference's most frequent period over the seeds. "
-      "Particle candidates run with the same seeds and are combined the same way.");
+      "Particle candidates run with the same seeds and are combined the same way. Each verdict "
+      "comes with its stability: the share of bootstrap resamples of the seeds that give the "
+      "same verdict; below the study's [verdicts] agreement, seeds are added up to [particles] "
+      "max_seeds, and a verdict still short of it is undecided.");
   Table t;
   t.title = "Model hierarchy against the full particle model";
   t.columns = {"layer", "model", "front speed (m/s)", "Δ / σ", "period (T)", "reproduces"};
@@ -213,10 +234,7 @@ void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& r
                         : c.powerless ? "cannot tell (error > 2x the reference's)"
                                       : "no"});
     }
-    verdicts +=
-        fmt::format("{} layer: {}. ", name,
-                    m.simplest.empty() ? "no simpler model reproduces the particles"
-                                       : "simplest model that reproduces it: " + m.simplest);
+    verdicts += fmt::format("{} layer: {}. ", name, verdictText(m.stability));
   }
   s.add(std::move(t));
   s.addText(verdicts);
@@ -230,6 +248,12 @@ void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& r
       format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
       formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
       format(dry.strong), verdicts);
+  const StateShares& st = r.states[1];
+  if (st.windows > 0)
+    report.summary += fmt::format(
+        " Wet layer in the period-2 state {:.0f} % of the time (95 %: {:.0f}–{:.0f} %) and of "
+        "period 2 in {} of {} seeds.",
+        100 * st.time_share, 100 * st.time_low, 100 * st.time_high, st.seeds_period2, st.seeds);
 }
 
 void lammpsSection(const WaveFrontsConfig& c, const LammpsComparison& l, const PaperLaw& dry,

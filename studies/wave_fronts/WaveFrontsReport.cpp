@@ -343,6 +343,7 @@ void reportWaveFronts(const WaveFrontsConfig& c, const WaveFrontsResults& r, Rep
   wetLawSection(r, report);
   costSection(c, r.cost, report);
   failureSection(c, r.failures, report);
+  stateSection(r, report);
   modelSection(c, r, report);
   if (r.lammps) lammpsSection(c, *r.lammps, r.paper[0], report);
 }

@@ -15,6 +15,8 @@ void costSection(const WaveFrontsConfig& config, const CostAccuracy& cost, Repor
 void failureSection(const WaveFrontsConfig& config, const FailureMap& failures, Report& report);
 // Also the report's summary, which ends with the models' verdict.
 void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& results, Report& report);
+// The layer's state: shares of seeds and time in the period-2 state, state-conditioned fronts.
+void stateSection(const WaveFrontsResults& results, Report& report);
 void lammpsSection(const WaveFrontsConfig& config, const LammpsComparison& lammps,
                    const PaperLaw& dry, Report& report);
 

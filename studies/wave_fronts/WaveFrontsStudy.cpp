@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -46,6 +47,18 @@ void WaveFrontsStudy::readKeys(StudyFile& f) {
   c_.scenes = LawScenes::read(f);
   c_.duration = f.number("particles", "duration", c_.duration);
   c_.seeds = f.integers("particles", "seeds", c_.seeds);
+  c_.max_seeds = f.integer("particles", "max_seeds", c_.max_seeds);
+  c_.seed_step = f.integer("particles", "seed_step", c_.seed_step);
+  c_.agreement = f.number("verdicts", "agreement", c_.agreement);
+  c_.resamples = f.integer("verdicts", "resamples", c_.resamples);
+  if (c_.seeds.empty()) f.fail("particles", "seeds", "expected at least one seed");
+  if (c_.max_seeds < static_cast<int>(c_.seeds.size()) || c_.max_seeds > 1000)
+    f.fail("particles", "max_seeds", "expected from the number of seeds listed up to 1000");
+  if (c_.seed_step < 1) f.fail("particles", "seed_step", "expected 1 or more seeds per round");
+  if (!(c_.agreement > 0.5 && c_.agreement <= 1))
+    f.fail("verdicts", "agreement", "expected a share in (0.5, 1]");
+  if (c_.resamples < 20 || c_.resamples > 100000)
+    f.fail("verdicts", "resamples", "expected 20 to 100000 bootstrap resamples");
   c_.window = f.integer("particles", "window_cycles", c_.window);
   c_.blocks = f.integer("particles", "blocks", c_.blocks);
   c_.profile_phases = f.numbers("particles", "profile_phases", c_.profile_phases);
@@ -100,9 +113,8 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   using C = WaveFrontsConfig;
   const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
   const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
-  for (int seed : c_.seeds)
-    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("seed {}", seed)),
-        {fmt::format("run.seed={}", seed)}, c_.duration);
+  for (int seed : c_.seeds) planSeed(f, law, seed, requests_);
+  for (int seed : c_.extraSeeds()) planSeed(f, law, seed, extra_[law]);
   add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {}, 0);
   add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
       {"hydro.restitution_model=\"constant\"", constant_e}, 0);
@@ -129,20 +141,54 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
             0)
             .failure_note = expected;
   }
-  // Simpler models than the full particle model, with the same seeds (the wet layer's
-  // period is bistable: one seed would not say which period a model gives).
-  for (int sd : c_.seeds) {
-    const std::string seed = fmt::format("run.seed={}", sd);
-    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("no rotation seed {}", sd)),
-        {"contact.friction=0", seed}, c_.duration);
-    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("constant e seed {}", sd)),
-        {"contact.restitution=\"constant\"", constant_e, seed}, c_.duration);
-  }
   add(f, RunKind::Hydro, law, C::hydroRun(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
       0);
   // Rough particles: the rotational temperature as a field (docs/hydro.md, "Rough particles"),
   // the continuum's answer to the particles' friction.
   add(f, RunKind::Hydro, law, C::hydroRun(law, "rough"), {"hydro.particles=\"rough\""}, 0);
+}
+
+// The paper's scene on one seed: the full particle model and the simpler particle models,
+// with the same seed (the wet layer's period is bistable: one seed would not say which period
+// a model gives).
+void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<RunRequest>& into) {
+  const std::string seed = fmt::format("run.seed={}", sd);
+  const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
+  auto push = [&](const std::string& tag, std::vector<std::string> overrides) {
+    overrides.push_back(fmt::format("run.duration={}", formatCompact(c_.duration)));
+    RunRequest q = runRequest(RunKind::Particles,
+                              WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd)),
+                              c_.scenes.scene(f, law, overrides));
+    q.window_cycles = c_.window;
+    q.blocks = c_.blocks;
+    into.push_back(std::move(q));
+  };
+  push("", {seed});
+  push("no rotation ", {"contact.friction=0", seed});
+  push("constant e ", {"contact.restitution=\"constant\"", constant_e, seed});
+}
+
+std::vector<int> WaveFrontsConfig::extraSeeds() const {
+  std::vector<int> out;
+  int next = seeds.empty() ? 1 : *std::max_element(seeds.begin(), seeds.end()) + 1;
+  for (std::size_t k = seeds.size(); k < static_cast<std::size_t>(max_seeds); ++k)
+    out.push_back(next++);
+  return out;
+}
+
+// More seeds of a law whose simplest-model verdict is undecided, seed_step at a time.
+std::vector<RunRequest> WaveFrontsStudy::followUp(const RunSet& runs) const {
+  std::vector<RunRequest> more;
+  for (int law = 0; law < kLaws; ++law) {
+    const std::size_t have = seedsOf(c_, runs, law).size();
+    if (have >= static_cast<std::size_t>(c_.max_seeds)) continue;
+    if (modelVerdictStability(c_, readModelInputs(c_, runs, law), law).decided) continue;
+    const std::size_t from = 3 * (have - c_.seeds.size());
+    const std::size_t to = std::min(extra_[law].size(), from + 3 * c_.seed_step);
+    more.insert(more.end(), extra_[law].begin() + static_cast<long>(from),
+                extra_[law].begin() + static_cast<long>(to));
+  }
+  return more;
 }
 
 // The wet law's parameters (Fig. 6b), and cost against accuracy for the wet layer: ED over the

@@ -17,6 +17,12 @@ struct WaveFrontsConfig {
   double e_eff[2] = {0, 0};  // constant restitution standing in for each law at T0
   double duration = 30;
   std::vector<int> seeds{1, 2, 3};
+  // Verdict stability: seeds are added seed_step at a time (the next integers after the
+  // largest listed) while the simplest-model verdict of a law is undecided, up to max_seeds;
+  // decided when a share `agreement` of `resamples` bootstrap resamples agree.
+  int max_seeds = 9, seed_step = 2, resamples = 200;
+  double agreement = 0.9;
+  std::vector<int> extraSeeds() const;
   int window = 2, blocks = 5;
   std::vector<double> profile_phases{0.88, 0.90, 0.92, 0.94, 0.96};
   double sweep_duration = 20;
@@ -59,11 +65,14 @@ class WaveFrontsStudy final : public Study {
     return "Wave fronts in vibrated dry and wet layers: particles against the continuum";
   }
   std::vector<RunRequest> plan() const override { return requests_; }
+  std::vector<RunRequest> followUp(const RunSet& runs) const override;
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
  private:
   void readKeys(StudyFile& f);
   void planLaw(const StudyFile& f, int law);
+  // The runs of one seed of the paper's scene: the full model and the simpler particle models.
+  void planSeed(const StudyFile& f, int law, int seed, std::vector<RunRequest>& into);
   void planWetSweeps(const StudyFile& f);
   void addLammps(StudyFile& f);
   // A run of `law` with the study's overrides and `overrides`; particle runs last `duration`.
@@ -72,6 +81,7 @@ class WaveFrontsStudy final : public Study {
 
   WaveFrontsConfig c_;
   std::vector<RunRequest> requests_;
+  std::vector<RunRequest> extra_[2];  // [law]: the added seeds' runs, seed by seed
 };
 
 std::unique_ptr<Study> makeWaveFrontsStudy(StudyFile& file);

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 
 #include "coarse_grain/PeriodDetector.hpp"
@@ -46,11 +47,64 @@ TEST(PeriodDoublingSeries, FindsThePeriodTwoEpisodeWindowByWindow) {
   }
   EXPECT_DOUBLE_EQ(s.period2_share, 4.0 / 12.0);
   EXPECT_EQ(s.switches, 2);
+  // Episodes: the known switching times exactly (they fall on window boundaries here).
+  ASSERT_EQ(s.episodes.size(), 3u);
+  EXPECT_EQ(s.episodes[0].first_cycle, 24);
+  EXPECT_EQ(s.episodes[0].cycles, 48);
+  EXPECT_EQ(s.episodes[0].period, 1);
+  EXPECT_EQ(s.episodes[1].first_cycle, 72);
+  EXPECT_EQ(s.episodes[1].cycles, 48);
+  EXPECT_EQ(s.episodes[1].period, 2);
+  EXPECT_EQ(s.episodes[2].first_cycle, 120);
+  EXPECT_EQ(s.episodes[2].period, 1);
   // One block of 4 correlated windows: fewer effective windows than 12, and an interval
   // that holds the share.
   EXPECT_LT(s.effective_windows, 12.0);
   EXPECT_LT(s.share_low, s.period2_share);
   EXPECT_GT(s.share_high, s.period2_share);
+}
+
+TEST(PeriodDoublingSeries, EpisodeBoundariesInsideAWindowAreExactUpToOneWindow) {
+  // Period 2 in cycles [77, 131) with noise: the episode must start within one window
+  // (12 cycles) of 77 and end within one window of 131.
+  std::vector<double> h = switching(180, 77, 131, 0.5);
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> noise(0.0, 0.0005);  // 10 % of the drive amplitude
+  for (double& v : h) v += noise(rng);
+  const PeriodDoublingSeries s = periodDoublingSeries(h, kM, 12);
+  int begin = -1, end = -1;
+  for (const StateEpisode& e : s.episodes)
+    if (e.period == 2) {
+      EXPECT_EQ(begin, -1) << "one period-2 episode expected";
+      begin = e.first_cycle;
+      end = e.first_cycle + e.cycles;
+    }
+  EXPECT_LE(std::abs(begin - 77), 12);
+  EXPECT_LE(std::abs(end - 131), 12);
+}
+
+TEST(PeriodDoublingSeries, NoiseAloneNeverMakesAPeriodTwoWindow) {
+  // Period 1 under white noise of 0.4 of the drive amplitude per sample: the noise threshold
+  // rises above the floor where the noise is large, and no window of 60 is called period 2
+  // (expected false calls: 60 x e^-9 ~ 0.007).
+  std::vector<double> h = switching(732, 0, 0, 0);
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> noise(0.0, 0.002);
+  for (double& v : h) v += noise(rng);
+  const PeriodDoublingSeries s = periodDoublingSeries(h, kM, 12);
+  ASSERT_EQ(s.period2.size(), 60u);
+  for (std::size_t w = 0; w < s.period2.size(); ++w) {
+    EXPECT_EQ(s.period2[w], 0) << "window " << w;
+    EXPECT_GE(s.threshold[w], 3 * s.noise_strength[w]);
+    EXPECT_GE(s.threshold[w], 0.1);
+  }
+  EXPECT_EQ(s.episodes.size(), 1u);
+  // White noise: each f/2 comb and each shifted comb holds 50 bins of mean power
+  // n sigma^2 against the harmonic's (n A / 2)^2, n = 1200 samples: s_n ~ sqrt(50 * 4 sigma^2 /
+  // (n A^2)) = sqrt(200 * 0.16 / 1200) = 0.163, within 30 % (six combs of 50 bins).
+  double mean = 0;
+  for (double v : s.noise_strength) mean += v / static_cast<double>(s.noise_strength.size());
+  EXPECT_NEAR(mean, 0.163, 0.05);
 }
 
 TEST(PeriodDoublingSeries, ALayerThatNeverSwitchesCountsAsOneObservation) {

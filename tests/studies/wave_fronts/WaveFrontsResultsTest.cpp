@@ -39,3 +39,18 @@ TEST_F(WaveFrontsResults, DryContinuumImpactFrontTravelsUpFromThePlate) {
 }
 
 }  // namespace
+
+namespace {
+
+// One seed: every bootstrap resample is the one seed, so the simplest-model verdict agrees in
+// all of them and is decided without adding seeds (docs/studies.md, "Verdict stability").
+TEST_F(WaveFrontsResults, WithOneSeedTheVerdictIsDecidedWithoutAddingSeeds) {
+  for (const char* law : {"dry", "wet"}) {
+    const std::string g = kRoot + "/models/" + law;
+    EXPECT_DOUBLE_EQ(study().value(g, "verdict_agreement"), 1.0) << law;
+    EXPECT_DOUBLE_EQ(study().value(g, "verdict_decided"), 1.0) << law;
+    EXPECT_DOUBLE_EQ(study().value(g, "verdict_seeds"), 1.0) << law;
+  }
+}
+
+}  // namespace

@@ -1,0 +1,57 @@
+// The wave-fronts study's report on the layer's state: share of seeds and of time in the
+// period-2 state, and the fronts and r_x of each state's episodes (docs/studies.md,
+// "State-resolved statistics").
+#include <fmt/format.h>
+
+#include "studies/wave_fronts/WaveFrontsReport.hpp"
+
+namespace granwave {
+
+namespace {
+std::string share(double p, double lo, double hi) {
+  if (!std::isfinite(p)) return "–";
+  return fmt::format("{:.2f} ({:.2f}–{:.2f})", p, lo, hi);
+}
+
+std::string withSeeds(const Measurement& m, int seeds) {
+  return m.valid() ? fmt::format("{} ({} seeds)", format(m), seeds) : "–";
+}
+}  // namespace
+
+void stateSection(const WaveFrontsResults& r, Report& report) {
+  ReportSection& s = report.section(
+      "The layer's state: period 1 and period 2",
+      "A run's centre of mass cut into windows of 12 cycles after the transient; a window is in "
+      "the period-2 state when its f/2 strength exceeds the larger of 0.1 and three times the "
+      "strength the same comb shifted off the f/2 lines holds (the window's own noise). Share "
+      "of seeds: runs whose whole-run period is 2 (95 % Wilson interval, n = seeds). Share of "
+      "time: windows in the period-2 state over all seeds (95 % Wilson interval with the summed "
+      "effective numbers of windows). Fronts and r_x of a state: the phase averages of that "
+      "state's windows alone (period-2 windows aligned on their strong impact), combined over "
+      "the seeds that had at least as many windows in the state as blocks; r_x against the "
+      "whole dry run of the same seed.");
+  Table t;
+  t.title = "State shares and state-conditioned fronts (paper's scene)";
+  t.columns = {"layer",
+               "seeds",
+               "period-2 share of seeds",
+               "windows",
+               "period-2 share of time",
+               "front, period 1 (m/s)",
+               "front, period 2 (m/s)",
+               "r_x, period 1",
+               "r_x, period 2"};
+  for (int law = 0; law < kLaws; ++law) {
+    const StateShares& st = r.states[law];
+    t.rows.push_back(
+        {kLawNames[law], std::to_string(st.seeds), share(st.seed_share, st.seed_low, st.seed_high),
+         fmt::format("{} ({} period 2)", st.windows, st.windows_period2),
+         share(st.time_share, st.time_low, st.time_high), withSeeds(st.front[0], st.front_seeds[0]),
+         withSeeds(st.front[1], st.front_seeds[1]),
+         law == 1 ? withSeeds(st.r_x[0], st.r_x_seeds[0]) : "–",
+         law == 1 ? withSeeds(st.r_x[1], st.r_x_seeds[1]) : "–"});
+  }
+  s.add(std::move(t));
+}
+
+}  // namespace granwave

@@ -1,0 +1,149 @@
+// The wave-fronts study's verdicts resolved by the layer's state and by the choice of seeds:
+// state shares over seeds with their intervals, fronts and r_x of each state's episodes, and
+// the stability of the simplest-model verdict (docs/studies.md, "State-resolved statistics",
+// "Verdict stability").
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "coarse_grain/PeriodDoublingSeries.hpp"
+#include "studies/framework/StudyResults.hpp"
+#include "studies/framework/WaveMomentumRatio.hpp"
+#include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
+
+namespace granwave {
+
+std::vector<int> seedsOf(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  std::vector<int> seeds = c.seeds;
+  for (int sd : c.extraSeeds())
+    if (runs.has(WaveFrontsConfig::particleRun(law, fmt::format("seed {}", sd))))
+      seeds.push_back(sd);
+  return seeds;
+}
+
+VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInputs& in, int law) {
+  auto verdict = [&](const std::vector<int>& pick) {
+    const std::string s = judgeModels(c, in, law, pick).simplest;
+    return s.empty() ? std::string("none") : s;
+  };
+  const int n = static_cast<int>(in.seeds.size());
+  std::vector<int> all(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
+  VerdictStability v;
+  v.verdict = verdict(all);
+  v.seeds = n;
+  v.resamples = c.resamples;
+  // A fixed 64-bit Mersenne Twister sequence, index = draw mod seeds: the same resamples on
+  // every build (std::uniform_int_distribution is not specified bit for bit).
+  std::mt19937_64 rng(20261202);
+  int same = 0;
+  for (int b = 0; b < c.resamples; ++b) {
+    std::vector<int> pick;
+    for (int i = 0; i < n; ++i) pick.push_back(static_cast<int>(rng() % static_cast<unsigned>(n)));
+    const std::string s = verdict(pick);
+    v.shares[s] += 1.0 / c.resamples;
+    same += s == v.verdict;
+  }
+  v.agreement = static_cast<double>(same) / c.resamples;
+  v.decided = v.agreement >= c.agreement;
+  return v;
+}
+
+ModelHierarchy analyseModels(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  const ModelInputs in = readModelInputs(c, runs, law);
+  std::vector<int> all;
+  for (std::size_t i = 0; i < in.seeds.size(); ++i) all.push_back(static_cast<int>(i));
+  ModelHierarchy m = judgeModels(c, in, law, all);
+  m.stability = modelVerdictStability(c, in, law);
+  return m;
+}
+
+namespace {
+
+// Mean over seeds of per-seed values, error the standard error (or the one run's spread).
+Measurement overSeedRuns(const std::vector<Measurement>& v) {
+  if (v.size() == 1) return v.front();
+  std::vector<double> values;
+  for (const Measurement& m : v) values.push_back(m.value);
+  return meanAndStandardError(values);
+}
+
+void addSeed(StateShares& s, const StateSeries& series, int period) {
+  ++s.seeds;
+  s.seeds_period2 += period == 2;
+  s.windows += series.windows();
+  s.windows_period2 += series.period2_windows;
+  s.effective_windows += series.effective_windows;
+  for (double t : series.threshold) s.max_threshold = std::max(s.max_threshold, t);
+  for (int k = 0; k < 2; ++k) s.state_windows[k] += std::max(0, series.state_windows[k]);
+}
+
+}  // namespace
+
+StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law) {
+  StateShares s;
+  std::vector<ImpactFronts> fronts[2];
+  std::vector<Measurement> ratios[2];
+  for (int sd : seedsOf(c, runs, law)) {
+    const RunRecord& r = runs.get(WaveFrontsConfig::particleRun(law, fmt::format("seed {}", sd)));
+    if (!r.ok) continue;
+    const StateSeries series = readStateSeries(r.fieldsPath());
+    if (!series.available) continue;
+    addSeed(s, series, series.layer_period);
+    const std::string dry_label = WaveFrontsConfig::particleRun(0, fmt::format("seed {}", sd));
+    std::optional<ParticleFields> dry;
+    if (law == 1 && runs.has(dry_label)) dry = particleFields(runs, dry_label);
+    for (int k = 0; k < 2; ++k) {
+      const auto state = readStateFields(r.fieldsPath(), k + 1);
+      if (!state) continue;
+      fronts[k].push_back(impactFronts(state->fronts));
+      if (!dry) continue;
+      const Measurement ratio = waveMomentumRatio(*dry, *state, {});
+      if (ratio.valid()) ratios[k].push_back(ratio);
+    }
+  }
+  if (s.seeds > 0) {
+    s.seed_share = static_cast<double>(s.seeds_period2) / s.seeds;
+    wilsonInterval(s.seed_share, s.seeds, s.seed_low, s.seed_high);
+  }
+  if (s.windows > 0) {
+    s.time_share = static_cast<double>(s.windows_period2) / s.windows;
+    wilsonInterval(s.time_share, std::max(1.0, s.effective_windows), s.time_low, s.time_high);
+  }
+  for (int k = 0; k < 2; ++k) {
+    s.front[k] = combineImpactFronts(fronts[k]).all;
+    s.front_seeds[k] = static_cast<int>(fronts[k].size());
+    if (!ratios[k].empty()) s.r_x[k] = overSeedRuns(ratios[k]);
+    s.r_x_seeds[k] = static_cast<int>(ratios[k].size());
+  }
+  return s;
+}
+
+void writeStates(h5::File& f, const std::string& root, int law, const StateShares& s) {
+  const std::string g = fmt::format("{}/states/{}", root, kLawNames[law]);
+  f.createGroup(g);
+  putValue(f, g, "seeds", s.seeds);
+  putValue(f, g, "seeds_period2", s.seeds_period2);
+  putValue(f, g, "seed_share", s.seed_share);
+  putValue(f, g, "seed_share_low", s.seed_low);
+  putValue(f, g, "seed_share_high", s.seed_high);
+  putValue(f, g, "windows", s.windows);
+  putValue(f, g, "windows_period2", s.windows_period2);
+  putValue(f, g, "effective_windows", s.effective_windows);
+  putValue(f, g, "time_share", s.time_share);
+  putValue(f, g, "time_share_low", s.time_low);
+  putValue(f, g, "time_share_high", s.time_high);
+  putValue(f, g, "max_threshold", s.max_threshold);
+  for (int k = 0; k < 2; ++k) {
+    const std::string p = fmt::format("period{}", k + 1);
+    putMeasurement(f, g, p + "_front", s.front[k]);
+    putValue(f, g, p + "_front_seeds", s.front_seeds[k]);
+    putValue(f, g, p + "_windows", s.state_windows[k]);
+    if (law == 1) putMeasurement(f, g, p + "_r_x", s.r_x[k]);
+    if (law == 1) putValue(f, g, p + "_r_x_seeds", s.r_x_seeds[k]);
+  }
+}
+
+}  // namespace granwave
