@@ -101,6 +101,12 @@ TrackedFront episodeFrom(const std::vector<FrontCrossing>& cs, int s, double dt,
     if (finite(c.jump_speed)) jumps.push_back(c.jump_speed);
     if (c.height >= c.layer_top - c.spacing) break;
   }
+  // Phases before the front leaves the bottom (the dilute underside compacting against the
+  // plate) are not propagation: the track starts at the last of them.
+  std::size_t m = 0;
+  while (m + 1 < e.height.size() && e.height[m + 1] < e.height.front() + cs[s].spacing) ++m;
+  e.time.erase(e.time.begin(), e.time.begin() + m);
+  e.height.erase(e.height.begin(), e.height.begin() + m);
   e.points = static_cast<int>(e.time.size());
   e.resolved = e.points >= o.min_points;
   e.speed = e.fit_error = e.speed_lower_bound = kNaNValue;

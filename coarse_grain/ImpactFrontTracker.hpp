@@ -12,7 +12,9 @@
 //
 // An episode is a run of consecutive phases (cyclic over the window) with a front that does not
 // move down by more than one row spacing per phase, starting within `impact_rows` rows of the
-// bottom of the layer; its speed is the slope of a straight line through height vs time. With
+// bottom of the layer; its speed is the slope of a straight line through height vs time from
+// the last phase before the front has risen by a row spacing (earlier phases are the layer's
+// dilute underside compacting against the plate, not propagation). With
 // fewer than `min_points` phases the front crossed the layer faster than the sampling resolves:
 // the episode then carries only a lower bound on its speed, (layer thickness) / (phases + 1) dt.
 //
