@@ -287,6 +287,22 @@ void trackedDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
     t.rows.push_back(row);
   }
   s.add(std::move(t));
+  int determined = 0, given = 0;  // RH speeds whose error is smaller than their value
+  for (int law = 0; law < kLaws; ++law)
+    for (const SweepPoint& p : r.n_sweep[law])
+      for (const Measurement& m : {p.tracked.jump_speed, p.hydro_tracked.jump_speed})
+        if (m.valid()) {
+          ++given;
+          determined += std::abs(m.value) > m.error;
+        }
+  if (given > 0 && 2 * determined < given)
+    s.addText(fmt::format(
+        "Only {} of the {} Rankine-Hugoniot speeds above exceed their error: across these "
+        "fronts the density changes by a few per cent, so [rho v] / [rho] is ill-conditioned "
+        "and checks nothing here. The tracker is checked against the jump conditions on the "
+        "hydro solver's shock into a uniform gas (docs/fields.md), where the density jump is "
+        "large.",
+        determined, given));
   s.addText(fmt::format(
       "The front at a phase is where v_z falls through the midpoint between the fastest-rising "
       "and the fastest-falling row of the layer; its speed is a straight-line fit from when it "
