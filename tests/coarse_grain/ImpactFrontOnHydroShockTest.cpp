@@ -19,10 +19,10 @@
 
 #include <cmath>
 
-#include "../hydro/HydroTestSupport.hpp"
 #include "coarse_grain/ImpactFrontTracker.hpp"
 #include "coarse_grain/LineFit.hpp"
 #include "hydro/ShockRelations.hpp"
+#include "tests/hydro/HydroTestSupport.hpp"
 
 using namespace granwave;
 using namespace granwave::hydro;
