@@ -19,6 +19,7 @@
 #include "particles/EngineState.hpp"
 #include "particles/Event.hpp"
 #include "particles/EventQueue.hpp"
+#include "particles/PairImpactHistogram.hpp"
 #include "particles/ParticleState.hpp"
 #include "particles/PlateMotion.hpp"
 #include "particles/Restitution.hpp"
@@ -84,6 +85,9 @@ class EdSimulation {
   EdSimulation(const EngineConfig& config, const EngineState& saved);
 
   void addObserver(SnapshotObserver* observer) { observers_.push_back(observer); }
+  // Sees every pair collision's pre-collision normal speed (PairImpactHistogram.hpp); one
+  // observer, or none (nullptr).
+  void setPairImpactObserver(PairImpactObserver* observer) { impact_observer_ = observer; }
   // Runs to config.duration, recording every record_interval (t = 0 included).
   // Stops early when *interrupt is set (polled every few thousand events, so within
   // milliseconds even inside a long record), or after a record when pause() returns true (it
@@ -155,6 +159,7 @@ class EdSimulation {
   EventQueue queue_;
   CellGrid cells_;
   std::vector<SnapshotObserver*> observers_;
+  PairImpactObserver* impact_observer_ = nullptr;
   Observables obs_;
   double now_ = 0;
   double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0, ride_curvature_ = 0;

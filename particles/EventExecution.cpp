@@ -151,6 +151,7 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   obs_.dissipated_energy += before - particleEnergy(a) - particleEnergy(b);
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
+  if (impact_observer_) impact_observer_->pairImpact({now_, closing, 0.5 * (a.z + b.z), elastic});
   noteCollision(i, j);
   noteCollision(j, i);
   predict(i);
@@ -204,6 +205,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   virial_ += rx * c.impulse.x + rz * c.impulse.z;
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
+  if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
   noteCollision(i, j);
   noteCollision(j, i);
   const double separation = -pairNormalSpeed(n, c.v1, c.v2);

@@ -55,6 +55,27 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
   return s;
 }
 
+// The N sweep's point `n`: the velocity-jump tracker on every seed's run and on the hydro run
+// (its time between phases from the window's t/T and the scene's frequency).
+void trackSweepPoint(const WaveFrontsConfig& c, const RunSet& runs, int law, int n, SweepPoint& s) {
+  std::vector<VelocityFronts> seeds;
+  for (int sd : c.sweep_seeds) {
+    const auto p =
+        particleFields(runs, WaveFrontsConfig::particleRun(
+                                 law, WaveFrontsConfig::countTag(n, sd, c.sweep_seeds.front())));
+    if (p) seeds.push_back(velocityFronts(*p));
+  }
+  s.tracked_seeds = static_cast<int>(seeds.size());
+  s.tracked = combineVelocityFronts(seeds);
+  const HydroOutcome h =
+      hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)));
+  if (h.fields && h.fields->phases > 1) {
+    const double dt =
+        (h.fields->phase[1] - h.fields->phase[0]) / c.scenes.base[law].drive.frequency;
+    s.hydro_tracked = velocityFronts(*h.fields, dt);
+  }
+}
+
 ParameterSweep wetSweep(const WaveFrontsConfig& c, const RunSet& runs, const std::string& key,
                         const std::vector<double>& values) {
   ParameterSweep sw{key, values, {}};
@@ -134,6 +155,34 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
   }
 }
 
+// The velocity-jump tracker's N sweep: speeds with errors, Rankine-Hugoniot speeds, lower
+// bounds of fronts faster than the sampling, seeds used.
+void writeTracked(h5::File& f, const std::string& grp, const std::vector<SweepPoint>& points) {
+  std::vector<double> v, e, j, je, bound, seeds, hv, he, hj, hje;
+  for (const SweepPoint& p : points) {
+    v.push_back(p.tracked.speed.value);
+    e.push_back(p.tracked.speed.error);
+    j.push_back(p.tracked.jump_speed.value);
+    je.push_back(p.tracked.jump_speed.error);
+    bound.push_back(p.tracked.lower_bound);
+    seeds.push_back(p.tracked_seeds);
+    hv.push_back(p.hydro_tracked.speed.value);
+    he.push_back(p.hydro_tracked.speed.error);
+    hj.push_back(p.hydro_tracked.jump_speed.value);
+    hje.push_back(p.hydro_tracked.jump_speed.error);
+  }
+  putSeries(f, grp + "/tracked_speed", v, "m s-1");
+  putSeries(f, grp + "/tracked_speed_error", e, "m s-1");
+  putSeries(f, grp + "/tracked_jump_speed", j, "m s-1");
+  putSeries(f, grp + "/tracked_jump_speed_error", je, "m s-1");
+  putSeries(f, grp + "/tracked_lower_bound", bound, "m s-1");
+  putSeries(f, grp + "/tracked_seeds", seeds, "1");
+  putSeries(f, grp + "/hydro_tracked_speed", hv, "m s-1");
+  putSeries(f, grp + "/hydro_tracked_speed_error", he, "m s-1");
+  putSeries(f, grp + "/hydro_tracked_jump_speed", hj, "m s-1");
+  putSeries(f, grp + "/hydro_tracked_jump_speed_error", hje, "m s-1");
+}
+
 void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {
   for (int law = 0; law < kLaws; ++law) {
     std::vector<double> x, y, e, cmin, yh;
@@ -152,6 +201,7 @@ void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults
     putSeries(f, grp + "/ed_speed_error", e, "m s-1");
     putSeries(f, grp + "/ed_collision_phase", cmin, "1");
     putSeries(f, grp + "/hydro_speed", yh, "m s-1");
+    writeTracked(f, grp, r.n_sweep[law]);
   }
   for (const ParameterSweep& sw : r.wet_sweeps) {
     std::vector<double> y, e, yh;
@@ -232,10 +282,12 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
   WaveFrontsResults r;
   for (int law = 0; law < kLaws; ++law) r.paper[law] = paperLaw(c, runs, law);
   for (int law = 0; law < kLaws; ++law)
-    for (int n : c.counts)
+    for (int n : c.counts) {
       r.n_sweep[law].push_back(
           sweepPoint(runs, WaveFrontsConfig::particleRun(law, fmt::format("N={}", n)),
                      WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)), c.sweepCycles(law)));
+      trackSweepPoint(c, runs, law, n, r.n_sweep[law].back());
+    }
   r.wet_sweeps[0] = wetSweep(c, runs, "St_c", c.stokes);
   r.wet_sweeps[1] = wetSweep(c, runs, "e_inf", c.e_inf);
   r.cost = costAccuracy(c, runs, r.paper[1]);

@@ -12,6 +12,7 @@
 #include "studies/framework/ImpactFronts.hpp"
 #include "studies/framework/Measurement.hpp"
 #include "studies/framework/Study.hpp"
+#include "studies/framework/VelocityFronts.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
 
@@ -50,6 +51,9 @@ struct SweepPoint {
   std::string hydro_failure;
   double ed_cpu_per_cycle = NAN;  // CPU-s per drive cycle of the particle run
   double hydro_cpu = NAN;         // CPU-s of the hydro run, settled layer to periodic state
+  // N sweep: the velocity-jump tracker over the sweep's seeds and on the hydro run.
+  VelocityFronts tracked, hydro_tracked;
+  int tracked_seeds = 0;
 };
 
 struct ParameterSweep {

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "studies/framework/InstalledFiles.hpp"
@@ -39,6 +41,28 @@ std::string WaveFrontsConfig::costHydroRun(int cells, double rtol) {
   return hydroRun(1, fmt::format("{} cells rtol {}", cells, formatCompact(rtol)));
 }
 
+std::vector<std::string> WaveFrontsConfig::countOverrides(int law, int count) const {
+  const Scene& base = scenes.base[law];
+  const double d = base.particles.diameter;
+  // Height of N disks close-packed in rows of L_x / d: rows x sqrt(3)/2 d + d.
+  const double rows = std::ceil(count * d / base.container.width);
+  const double packed = rows * std::sqrt(3.0) / 2 * d + d;
+  std::vector<std::string> o{fmt::format("particles.count={}", count)};
+  const double height = std::max(base.container.height, packed + sweep_headroom);
+  if (height > base.container.height) o.push_back(fmt::format("container.height={:.6g}", height));
+  // Random sequential placement jams near an area fraction of 0.55 (Feder, J. Theor. Biol. 87,
+  // 237 (1980)); here it placed N = 600 in the paper's box (0.52) and failed for N = 900 (0.64).
+  // Denser boxes start from the lattice (the transient is discarded either way).
+  const double area_fraction =
+      count * std::numbers::pi * d * d / 4 / (base.container.width * height);
+  if (area_fraction > 0.53) o.push_back("initial.placement=\"lattice\"");
+  return o;
+}
+
+std::string WaveFrontsConfig::countTag(int count, int seed, int first_seed) {
+  return seed == first_seed ? fmt::format("N={}", count) : fmt::format("N={} seed {}", count, seed);
+}
+
 std::string WaveFrontsConfig::lammpsRun() const {
   return fmt::format("LAMMPS dry seed {}", lammps_seed);
 }
@@ -64,6 +88,14 @@ void WaveFrontsStudy::readKeys(StudyFile& f) {
   c_.profile_phases = f.numbers("particles", "profile_phases", c_.profile_phases);
   c_.sweep_duration = f.number("sweep", "duration", c_.sweep_duration);
   c_.counts = f.integers("sweep", "counts", c_.counts);
+  c_.sweep_seeds = f.integers("sweep", "seeds", c_.sweep_seeds);
+  if (c_.sweep_seeds.empty()) f.fail("sweep", "seeds", "expected at least one seed");
+  c_.sweep_phases = f.integer("sweep", "phases_per_cycle", c_.sweep_phases);
+  if (c_.sweep_phases < 10 || c_.sweep_phases > 2000)
+    f.fail("sweep", "phases_per_cycle", "expected an integer in [10, 2000]");
+  c_.sweep_headroom = f.number("sweep", "headroom", c_.sweep_headroom);
+  if (!(c_.sweep_headroom >= 0 && c_.sweep_headroom <= 1))
+    f.fail("sweep", "headroom", "expected a height in m in [0, 1]");
   c_.answer_cycles = f.number("sweep", "answer_cycles", c_.answer_cycles);
   if (!(c_.answer_cycles >= 1 && c_.answer_cycles <= 1e6))
     f.fail("sweep", "answer_cycles", "expected a number of cycles in [1, 1e6]");
@@ -118,11 +150,17 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {}, 0);
   add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
       {"hydro.restitution_model=\"constant\"", constant_e}, 0);
+  const std::string phases = fmt::format("run.phases_per_cycle={}", c_.sweep_phases);
   for (int n : c_.counts) {
-    const std::string count = fmt::format("particles.count={}", n);
-    add(f, RunKind::Particles, law, C::particleRun(law, fmt::format("N={}", n)), {count, seed1},
-        c_.sweep_duration);
-    add(f, RunKind::Hydro, law, C::hydroRun(law, fmt::format("N={}", n)), {count}, 0);
+    std::vector<std::string> count = c_.countOverrides(law, n);
+    count.push_back(phases);
+    for (int sd : c_.sweep_seeds) {
+      std::vector<std::string> o = count;
+      o.push_back(fmt::format("run.seed={}", sd));
+      add(f, RunKind::Particles, law,
+          C::particleRun(law, C::countTag(n, sd, c_.sweep_seeds.front())), o, c_.sweep_duration);
+    }
+    add(f, RunKind::Hydro, law, C::hydroRun(law, fmt::format("N={}", n)), count, 0);
   }
   // Where methods fail: ED without TC, hydro over Gamma x grid x tolerance. A failure of these
   // runs is a result, and the progress lines say so.

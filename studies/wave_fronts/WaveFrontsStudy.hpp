@@ -29,6 +29,15 @@ struct WaveFrontsConfig {
   // Cycles the particles average for one answer (period and front), for the cost per answer.
   double answer_cycles = 150;
   std::vector<int> counts{150, 300, 450, 600};
+  // The N sweep's seeds (the first also gives the T~_g fronts and the cost), its phases per
+  // cycle (a dense layer's front crosses it in a few ms), and the free height kept above the
+  // close-packed layer: the lid is raised for counts whose layer would leave less.
+  std::vector<int> sweep_seeds{1, 2};
+  int sweep_phases = 400;
+  double sweep_headroom = 0.02;  // m
+  // Scene overrides of one count's runs (particles.count, and container.height if raised).
+  std::vector<std::string> countOverrides(int law, int count) const;
+  static std::string countTag(int count, int seed, int first_seed);
   std::vector<double> stokes{20, 40, 80}, e_inf{0.8, 0.91, 0.95};
   std::vector<double> cost_durations{7.5, 15, 30, 60};
   std::vector<int> cost_cells{25, 50, 100, 200, 400};

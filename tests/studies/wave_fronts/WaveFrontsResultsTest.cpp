@@ -38,6 +38,15 @@ TEST_F(WaveFrontsResults, DryContinuumImpactFrontTravelsUpFromThePlate) {
   EXPECT_GT(v, 3 * e) << v << " +- " << e << " m/s";
 }
 
+TEST_F(WaveFrontsResults, DryContinuumFrontByTheVelocityJumpTravelsUpAtN150) {
+  // The velocity-jump tracker (coarse_grain/ImpactFrontTracker.hpp) on the hydro run of the
+  // N sweep's first count: a front rising from the plate, beyond 3 of its stated sigma.
+  const auto v = study().series(kRoot + "/n_sweep/dry/hydro_tracked_speed");
+  const auto e = study().series(kRoot + "/n_sweep/dry/hydro_tracked_speed_error");
+  ASSERT_FALSE(v.empty());
+  EXPECT_GT(v[0], 3 * e[0]) << v[0] << " +- " << e[0] << " m/s";
+}
+
 }  // namespace
 
 namespace {

@@ -1,0 +1,91 @@
+#include "studies/framework/VelocityFronts.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "coarse_grain/ImpactFrontTracker.hpp"
+
+namespace granwave {
+
+namespace {
+
+FrontProfiles profilesOf(const Profiles& p, const std::vector<double>& density,
+                         const std::vector<double>& velocity, std::size_t offset) {
+  FrontProfiles f;
+  f.phases = p.phases;
+  f.nz = p.nz;
+  f.z = p.z;
+  const std::size_t n = static_cast<std::size_t>(p.phases) * p.nz;
+  f.density.assign(density.begin() + offset, density.begin() + offset + n);
+  f.velocity.assign(velocity.begin() + offset, velocity.begin() + offset + n);
+  return f;
+}
+
+// An episode counts when the bootstrap (if any) finds it in at least half of its resamples.
+VelocityFronts summarise(const std::vector<TrackedFront>& fronts) {
+  VelocityFronts v;
+  std::vector<Measurement> speeds, jumps;
+  for (const TrackedFront& f : fronts) {
+    ++v.episodes;
+    if (!f.resolved) {
+      v.lower_bound = std::isfinite(v.lower_bound) ? std::min(v.lower_bound, f.speed_lower_bound)
+                                                   : f.speed_lower_bound;
+      continue;
+    }
+    if (std::isfinite(f.bootstrap_found) && f.bootstrap_found < 0.5) continue;
+    ++v.resolved;
+    const double boot = std::isfinite(f.bootstrap_error) ? f.bootstrap_error : 0.0;
+    const double fit = std::isfinite(f.fit_error) ? f.fit_error : 0.0;
+    speeds.push_back({f.speed, std::hypot(boot, fit)});
+    if (std::isfinite(f.jump_speed)) jumps.push_back({f.jump_speed, f.jump_speed_spread});
+  }
+  v.speed = combine(speeds);
+  v.jump_speed = combine(jumps);
+  if (v.speed.valid()) return v;
+  if (v.episodes == 0)
+    v.why_none = "no impact front: no velocity jump of 0.2 m/s rises from the layer's bottom";
+  else if (std::isfinite(v.lower_bound))
+    v.why_none = fmt::format("faster than the sampling resolves (> {:.1f} m/s)", v.lower_bound);
+  else
+    v.why_none = "the front is not found in half of the bootstrap resamples";
+  return v;
+}
+
+}  // namespace
+
+VelocityFronts velocityFronts(const ParticleFields& p) {
+  const double dt = p.cycles_per_window / (p.frequency * p.phases);
+  const FrontProfiles pooled = profilesOf(p, p.area_fraction, p.velocity_z, 0);
+  std::vector<FrontProfiles> blocks;
+  const std::size_t per_block = static_cast<std::size_t>(p.phases) * p.nz;
+  for (int b = 0; b < p.blocks; ++b)
+    blocks.push_back(profilesOf(p, p.block_area_fraction, p.block_velocity_z, b * per_block));
+  return summarise(trackWithBootstrap(pooled, blocks, dt));
+}
+
+VelocityFronts velocityFronts(const Profiles& p, double phase_dt) {
+  return summarise(trackFronts(profilesOf(p, p.area_fraction, p.velocity_z, 0), phase_dt));
+}
+
+VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {
+  VelocityFronts v;
+  std::vector<Measurement> speeds, jumps;
+  for (const VelocityFronts& s : seeds) {
+    v.episodes += s.episodes;
+    v.resolved += s.resolved;
+    speeds.push_back(s.speed);
+    jumps.push_back(s.jump_speed);
+    if (std::isfinite(s.lower_bound))
+      v.lower_bound =
+          std::isfinite(v.lower_bound) ? std::min(v.lower_bound, s.lower_bound) : s.lower_bound;
+    if (!s.why_none.empty() && v.why_none.empty()) v.why_none = s.why_none;
+  }
+  v.speed = combine(speeds);
+  v.jump_speed = combine(jumps);
+  if (v.speed.valid()) v.why_none.clear();
+  return v;
+}
+
+}  // namespace granwave

@@ -1,0 +1,31 @@
+#pragma once
+// The impact fronts of a run by the velocity-jump tracker (coarse_grain/ImpactFrontTracker.hpp),
+// the tracker that stays right in deep layers (docs/fields.md, "Impact fronts by the velocity
+// jump"): per run the speed of its impact fronts with errors from a bootstrap over its blocks of
+// cycles (particles) or the fit (hydro), the Rankine-Hugoniot speed from the states either side,
+// and, for fronts too fast for the sampling, a lower bound; over seeds, their combination.
+#include <string>
+#include <vector>
+
+#include "studies/framework/Measurement.hpp"
+#include "studies/run_files/RunOutputs.hpp"
+
+namespace granwave {
+
+struct VelocityFronts {
+  Measurement speed;       // m/s, lab frame: the run's resolved impact fronts combined
+  Measurement jump_speed;  // m/s, Rankine-Hugoniot [rho v] / [rho] over the same fronts
+  int episodes = 0, resolved = 0;
+  double lower_bound = NAN;  // m/s: the smallest bound of the unresolved fronts
+  std::string why_none;      // empty when `speed` is valid
+};
+
+// Particles: time between phases from the run's frequency and window.
+VelocityFronts velocityFronts(const ParticleFields& p);
+// Hydro (lab-frame profiles), `phase_dt` the time between its phases (s).
+VelocityFronts velocityFronts(const Profiles& p, double phase_dt);
+// Over seeds: the speeds combined (granwave::combine: the seed scatter enlarges the error),
+// lower bounds by their smallest, the reasons kept when no seed has a speed.
+VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds);
+
+}  // namespace granwave
