@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "particles/EventLoopStall.hpp"
@@ -17,6 +18,7 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
   const double d = cfg_.diameter;
   p_.resize(n);
   ev_.resize(n);
+  pair_ev_.resize(n);
   queue_.reset(n);
   const double tol = 1e-9 * d;
   for (int i = 0; i < n; ++i) {
@@ -74,6 +76,11 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
   if (queue_.size() != n)
     throw std::invalid_argument(fmt::format(
         "saved engine state: the event queue holds {} particles, the state {}", queue_.size(), n));
+  for (int i = 0; i < n; ++i)
+    if (!(queue_.time(i) == saved.events[i].time))
+      throw std::invalid_argument(
+          fmt::format("saved engine state: particle {} is queued at t = {} s, its event at {} s", i,
+                      queue_.time(i), saved.events[i].time));
   cells_.restore(saved.cells);
   if (!(saved.now >= 0) || !(saved.next_record >= saved.now))
     throw std::invalid_argument(
@@ -81,6 +88,14 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
                     saved.next_record));
   p_ = saved.particles;
   ev_ = saved.events;
+  if (saved.pair_events.empty()) {
+    pair_ev_.assign(n, Event{-std::numeric_limits<double>::infinity()});
+  } else if (static_cast<int>(saved.pair_events.size()) == n) {
+    pair_ev_ = saved.pair_events;
+  } else {
+    throw std::invalid_argument(fmt::format("saved engine state: {} pair events for {} particles",
+                                            saved.pair_events.size(), n));
+  }
   obs_ = saved.observables;
   now_ = saved.now;
   records_ = saved.records;
@@ -93,6 +108,7 @@ EngineState EdSimulation::state() const {
   EngineState s;
   s.particles = p_;
   s.events = ev_;
+  s.pair_events = pair_ev_;
   s.queue = queue_.layout();
   s.cells = cells_.lists();
   s.observables = obs_;
@@ -127,6 +143,9 @@ void EdSimulation::setUp(int n) {
   if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
     throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
   cells_ = CellGrid(g, n);
+  // Without bottom and lid nothing rides a wall: every pair time is then exact for all
+  // future times, so a prediction may be carried over a cell crossing (pair_ev_).
+  incremental_crossings_ = cfg_.periodic_z;
 
   const double aw2 = cfg_.plate.maxAcceleration();
   bottom_curvature_ = cfg_.gravity + aw2;

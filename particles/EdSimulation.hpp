@@ -110,9 +110,13 @@ class EdSimulation {
   void setUp(int particles);
   // prediction (EventPrediction.cpp)
   void predict(int i);
+  // Schedules i's earliest event from its earliest pair event and its own crossings and walls.
+  void schedule(int i, const ParticleState& s, const Event& pair);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;
-  void predictWalls(int i, const ParticleState& s, Event& best) const;
-  void predictPairs(int i, const ParticleState& s, Event& best) const;
+  void predictWalls(int i, const ParticleState& s, Event& best, double horizon) const;
+  // Pairs of i with the particles of the m stencil cells nb (earliest into best).
+  void predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
+                    Event& best) const;
   // execution (EventExecution.cpp)
   void process(int i);
   void doPair(int i, int j, Vec2 image_shift);
@@ -152,6 +156,12 @@ class EdSimulation {
   EngineConfig cfg_;
   std::vector<ParticleState> p_;
   std::vector<Event> ev_;
+  // Each particle's earliest pair event at its last prediction (time -inf: not known). A cell
+  // crossing leaves the trajectory unchanged, so when every pair time is exact (no particle
+  // can ride a wall) it needs to test only the newly adjacent cells against this (DynamO's
+  // approach; docs/ARCHITECTURE.md, "Event calendar").
+  std::vector<Event> pair_ev_;
+  bool incremental_crossings_ = false;
   EventQueue queue_;
   CellGrid cells_;
   std::vector<SnapshotObserver*> observers_;

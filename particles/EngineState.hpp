@@ -18,6 +18,9 @@ namespace granwave {
 struct EngineState {
   std::vector<ParticleState> particles;
   std::vector<Event> events;  // each particle's one scheduled event
+  // Each particle's earliest pair event at its last prediction (EdSimulation::pair_ev_);
+  // empty in states saved before it existed (then re-predicted in full at the next crossing).
+  std::vector<Event> pair_events;
   EventQueue::Layout queue;
   CellGrid::Lists cells;
   Observables observables;  // cumulative counters (the per-record ones are recomputed)

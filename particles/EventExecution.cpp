@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "particles/EdSimulation.hpp"
 #include "particles/InelasticCollapse.hpp"
@@ -388,7 +389,20 @@ void EdSimulation::doCross(int i, CrossDirection dir) {
   }
   cells_.remove(i);
   cells_.insert(i, cells_.index(cx, cz));
-  predict(i);
+  if (!incremental_crossings_ || pair_ev_[i].time == -std::numeric_limits<double>::infinity()) {
+    predict(i);
+    return;
+  }
+  // The trajectory is unchanged: the earliest pair event found before still bounds every
+  // pair of the cells that stay adjacent (stale or not: a stale one re-predicts in full when
+  // it comes due, as any stale event). Only the newly adjacent cells need testing.
+  const int step_x = dir == kCrossXPlus ? 1 : dir == kCrossXMinus ? -1 : 0;
+  const int step_z = dir == kCrossZPlus ? 1 : dir == kCrossZMinus ? -1 : 0;
+  CellGrid::Neighbour nb[3];
+  const int m = cells_.newNeighbours(cells_.cellOf(i), step_x, step_z, nb);
+  Event pair = pair_ev_[i];
+  predictPairs(i, s, nb, m, pair);
+  schedule(i, s, pair);
 }
 
 }  // namespace granwave

@@ -40,10 +40,21 @@ inline double fallTime(double gap, double v, double g) {
 
 void EdSimulation::predict(int i) {
   const ParticleState s = extrapolated(i, now_);
+  CellGrid::Neighbour nb[9];
+  const int m = cells_.neighbours(cells_.cellOf(i), nb);
+  Event pair;
+  predictPairs(i, s, nb, m, pair);
+  schedule(i, s, pair);
+}
+
+void EdSimulation::schedule(int i, const ParticleState& s, const Event& pair) {
+  pair_ev_[i] = pair;
+  // Precedence at equal times: crossing, then walls, then pairs. The wall root finders need
+  // to look no further than the earliest event found so far.
   Event best;
   predictCrossing(i, s, best);
-  predictWalls(i, s, best);
-  predictPairs(i, s, best);
+  predictWalls(i, s, best, std::min(best.time, pair.time));
+  if (pair.time < best.time) best = pair;
   ev_[i] = best;
   queue_.update(i, best.time);
 }
@@ -61,6 +72,14 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
 
   const bool up_open = g.periodic_z || cz + 1 < g.nz;
   const bool down_open = g.periodic_z || cz > 0;
+  if (s.motion == Motion::Ballistic && cfg_.gravity == 0.0) {  // straight lines (a gas)
+    if (up_open && s.vz > 0.0)
+      consider(best, now_ + std::max(0.0, zlo + g.wz - s.z) / s.vz, EventKind::CellCross,
+               kCrossZPlus);
+    if (down_open && s.vz < 0.0)
+      consider(best, now_ + std::max(0.0, s.z - zlo) / -s.vz, EventKind::CellCross, kCrossZMinus);
+    return;
+  }
   if (s.motion == Motion::Ballistic) {
     if (up_open)
       consider(best, now_ + riseTime(zlo + g.wz - s.z, s.vz, cfg_.gravity), EventKind::CellCross,
@@ -89,7 +108,7 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
   }
 }
 
-void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) const {
+void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best, double horizon) const {
   (void)i;
   const double r = 0.5 * cfg_.diameter;
   if (!cfg_.periodic_x) {
@@ -132,7 +151,7 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
     if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kBottom, t0)) {
       consider(best, t0, EventKind::Wall, kBottom);  // resting contact: starts riding
     } else {
-      consider(best, firstClosingRoot(gap, bottom_curvature_, t0, best.time, {tol}, h0),
+      consider(best, firstClosingRoot(gap, bottom_curvature_, t0, horizon, {tol}, h0),
                EventKind::Wall, kBottom);
     }
   }
@@ -147,20 +166,19 @@ void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best) cons
     if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kLid, t0)) {
       consider(best, t0, EventKind::Wall, kLid);
     } else {
-      consider(best, firstClosingRoot(gap, lid_curvature_, t0, best.time, {tol}, h0),
-               EventKind::Wall, kLid);
+      consider(best, firstClosingRoot(gap, lid_curvature_, t0, horizon, {tol}, h0), EventKind::Wall,
+               kLid);
     }
   }
 }
 
-void EdSimulation::predictPairs(int i, const ParticleState& s, Event& best) const {
+void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
+                                Event& best) const {
   const double d = cfg_.diameter, g = cfg_.gravity;
   // The plate's state now, evaluated once and only if a rider is met (sin/cos are costly).
   double zb_now = 0, vb_now = 0;
   bool plate_known = false;
   const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
-  CellGrid::Neighbour nb[9];
-  const int m = cells_.neighbours(cells_.cellOf(i), nb);
   for (int c = 0; c < m; ++c) {
     for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
       if (j == i) continue;
