@@ -76,6 +76,15 @@ void CellGrid::restore(const Lists& saved) {
 
 int CellGrid::newNeighbours(int cell, int step_x, int step_z, Neighbour out[3]) const {
   const int cx0 = cx(cell), cz0 = cz(cell);
+  if (cx0 > 0 && cx0 + 1 < g_.nx && cz0 > 0 && cz0 + 1 < g_.nz) {
+    // Interior cell: no wrapping, no shifts.
+    const int far = cell + step_x + step_z * g_.nx;
+    const int along = step_x != 0 ? g_.nx : 1;
+    out[0] = {far - along, 0.0, 0.0};
+    out[1] = {far, 0.0, 0.0};
+    out[2] = {far + along, 0.0, 0.0};
+    return 3;
+  }
   int n = 0;
   for (int k = -1; k <= 1; ++k) {
     int cx1 = cx0 + (step_x != 0 ? step_x : k);

@@ -165,8 +165,8 @@ void EdSimulation::advance(int i, double t) {
     // The wall carries the particle: its energy changes by the wall's work.
     const double before = particleEnergy(s);
     s.x += s.vx * dt;
-    s.z = cfg_.plate.height(t) + s.ride_offset;
-    s.vz = cfg_.plate.velocity(t);
+    s.z = plateAt(t).height + s.ride_offset;
+    s.vz = plateAt(t).velocity;
     obs_.wall_work += particleEnergy(s) - before;
   }
   s.t = t;
@@ -180,8 +180,8 @@ ParticleState EdSimulation::extrapolated(int i, double t) const {
     s.z += (s.vz - 0.5 * cfg_.gravity * dt) * dt;
     s.vz -= cfg_.gravity * dt;
   } else {
-    s.z = cfg_.plate.height(t) + s.ride_offset;
-    s.vz = cfg_.plate.velocity(t);
+    s.z = plateAt(t).height + s.ride_offset;
+    s.vz = plateAt(t).velocity;
   }
   s.t = t;
   return s;
@@ -200,10 +200,10 @@ bool EdSimulation::wallPushes(WallId wall, double t) const {
   // At the switching instant itself (a = -g up to round-off, e.g. at a take-off event) the
   // sign of the jerk says which side the next instant is on.
   if (wall != kBottom && wall != kLid) return false;
-  const double excess = cfg_.plate.acceleration(t) + cfg_.gravity;  // > 0: bottom pushes
+  const double excess = plateAt(t).acceleration + cfg_.gravity;  // > 0: bottom pushes
   const double scale = cfg_.gravity + cfg_.plate.maxAcceleration();
   double side = excess;
-  if (std::abs(excess) <= 1e-9 * scale) side = cfg_.plate.jerk(t);
+  if (std::abs(excess) <= 1e-9 * scale) side = plateAt(t).jerk;
   return wall == kBottom ? side > 0.0 : side < 0.0;
 }
 
@@ -222,7 +222,7 @@ Snapshot EdSimulation::snapshot() const {
   const int n = size();
   snap.time = now_;
   snap.step = records_;
-  snap.plate_height = cfg_.plate.height(now_);
+  snap.plate_height = plateAt(now_).height;
   snap.x.resize(n);
   snap.z.resize(n);
   snap.vx.resize(n);

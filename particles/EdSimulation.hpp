@@ -12,6 +12,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "particles/CellGrid.hpp"
@@ -114,6 +115,7 @@ class EdSimulation {
   void schedule(int i, const ParticleState& s, const Event& pair);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;
   void predictWalls(int i, const ParticleState& s, Event& best, double horizon) const;
+  void predictBottomAndLid(const ParticleState& s, Event& best, double horizon) const;
   // Pairs of i with the particles of the m stencil cells nb (earliest into best).
   void predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
                     Event& best) const;
@@ -150,6 +152,15 @@ class EdSimulation {
   ParticleState extrapolated(int i, double t) const;
   double particleEnergy(const ParticleState& s) const;
   bool wallPushes(WallId wall, double t) const;
+  // The plate's state at t, remembered for the last t asked (most calls are at now_: each
+  // event's predictions and collision rules ask several times, and sin/cos are costly).
+  const PlateState& plateAt(double t) const {
+    if (!(plate_time_ == t)) {
+      plate_ = cfg_.plate.state(t);
+      plate_time_ = t;
+    }
+    return plate_;
+  }
   Vec2 imageShiftTo(int i, int j) const;
   void record();
 
@@ -173,6 +184,8 @@ class EdSimulation {
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)
   double virial_since_ = 0;
   bool rotation_ = false;
+  mutable PlateState plate_;  // plateAt's memory
+  mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace granwave
