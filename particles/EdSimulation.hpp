@@ -5,10 +5,11 @@
 // Particles fly ballistically under gravity between instantaneous events: pair collisions
 // (exact quadratic), collisions with the sinusoidally moving bottom and lid (exact first
 // root via GapRootFinder), side walls, cell crossings, and take-off of particles riding a
-// wall. Each particle keeps one scheduled event in an indexed heap; events made stale by a
-// partner's collision are dropped lazily by collision counters; particles are advanced
-// lazily. Recording extrapolates all particles to the recording time without changing
-// the state. Cost per event O(log N), memory O(N).
+// wall. Each particle keeps one scheduled event in a calendar queue (EventQueue.hpp);
+// events made stale by a partner's collision are dropped lazily by collision counters;
+// particles are advanced lazily. Recording extrapolates all particles to the recording time
+// without changing the state. Cost per event O(1) on average (the calendar queue; O(log N)
+// at worst, for many equal times), memory O(N).
 #include <atomic>
 #include <cstdint>
 #include <functional>

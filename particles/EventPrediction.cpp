@@ -197,9 +197,6 @@ void EdSimulation::predictBottomAndLid(const ParticleState& s, Event& best, doub
 void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
                                 Event& best) const {
   const double d = cfg_.diameter, g = cfg_.gravity;
-  // The plate's state now, evaluated once and only if a rider is met (sin/cos are costly).
-  double zb_now = 0, vb_now = 0;
-  bool plate_known = false;
   const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
   for (int c = 0; c < m; ++c) {
     for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
@@ -211,13 +208,8 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
         oz = q.z + (q.vz - 0.5 * g * dt) * dt;
         ovz = q.vz - g * dt;
       } else {
-        if (!plate_known) {
-          zb_now = plateAt(now_).height;
-          vb_now = plateAt(now_).velocity;
-          plate_known = true;
-        }
-        oz = zb_now + q.ride_offset;
-        ovz = vb_now;
+        oz = plateAt(now_).height + q.ride_offset;  // sin/cos only if a rider is met
+        ovz = plateAt(now_).velocity;
       }
       const double rx = s.x - (q.x + q.vx * dt) - nb[c].shift_x;
       const double rz = s.z - oz - nb[c].shift_z;
