@@ -74,6 +74,37 @@ void CellGrid::restore(const Lists& saved) {
   cell_ = saved.cell;
 }
 
+int CellGrid::newNeighbours(int cell, int step_x, int step_z, Neighbour out[3]) const {
+  const int cx0 = cx(cell), cz0 = cz(cell);
+  if (cx0 > 0 && cx0 + 1 < g_.nx && cz0 > 0 && cz0 + 1 < g_.nz) {
+    // Interior cell: no wrapping, no shifts.
+    const int far = cell + step_x + step_z * g_.nx;
+    const int along = step_x != 0 ? g_.nx : 1;
+    out[0] = {far - along, 0.0, 0.0};
+    out[1] = {far, 0.0, 0.0};
+    out[2] = {far + along, 0.0, 0.0};
+    return 3;
+  }
+  int n = 0;
+  for (int k = -1; k <= 1; ++k) {
+    int cx1 = cx0 + (step_x != 0 ? step_x : k);
+    int cz1 = cz0 + (step_z != 0 ? step_z : k);
+    double sx = 0, sz = 0;
+    if (cx1 < 0 || cx1 >= g_.nx) {
+      if (!g_.periodic_x) continue;
+      sx = cx1 < 0 ? -g_.lx() : g_.lx();
+      cx1 = (cx1 + g_.nx) % g_.nx;
+    }
+    if (cz1 < 0 || cz1 >= g_.nz) {
+      if (!g_.periodic_z) continue;
+      sz = cz1 < 0 ? -g_.lz() : g_.lz();
+      cz1 = (cz1 + g_.nz) % g_.nz;
+    }
+    out[n++] = {index(cx1, cz1), sx, sz};
+  }
+  return n;
+}
+
 int CellGrid::neighbours(int cell, Neighbour out[9]) const {
   const int cx0 = cx(cell), cz0 = cz(cell);
   if (cx0 > 0 && cx0 + 1 < g_.nx && cz0 > 0 && cz0 + 1 < g_.nz) {

@@ -47,6 +47,9 @@ class CellGrid {
     double shift_x, shift_z;
   };
   int neighbours(int cell, Neighbour out[9]) const;
+  // The part of that stencil that a particle entering `cell` by a step (step_x, step_z) (one
+  // of them +-1, the other 0) did not have before: the row or column on the far side.
+  int newNeighbours(int cell, int step_x, int step_z, Neighbour out[3]) const;
 
   // The linked lists exactly as stored (checkpoints): the order of particles in a cell is
   // the order pairs are predicted in, which decides between pair events at exactly equal

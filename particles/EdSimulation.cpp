@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "particles/EventLoopStall.hpp"
@@ -17,6 +18,7 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
   const double d = cfg_.diameter;
   p_.resize(n);
   ev_.resize(n);
+  pair_ev_.resize(n);
   queue_.reset(n);
   const double tol = 1e-9 * d;
   for (int i = 0; i < n; ++i) {
@@ -74,6 +76,11 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
   if (queue_.size() != n)
     throw std::invalid_argument(fmt::format(
         "saved engine state: the event queue holds {} particles, the state {}", queue_.size(), n));
+  for (int i = 0; i < n; ++i)
+    if (!(queue_.time(i) == saved.events[i].time))
+      throw std::invalid_argument(
+          fmt::format("saved engine state: particle {} is queued at t = {} s, its event at {} s", i,
+                      queue_.time(i), saved.events[i].time));
   cells_.restore(saved.cells);
   if (!(saved.now >= 0) || !(saved.next_record >= saved.now))
     throw std::invalid_argument(
@@ -81,6 +88,14 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
                     saved.next_record));
   p_ = saved.particles;
   ev_ = saved.events;
+  if (saved.pair_events.empty()) {
+    pair_ev_.assign(n, Event{-std::numeric_limits<double>::infinity()});
+  } else if (static_cast<int>(saved.pair_events.size()) == n) {
+    pair_ev_ = saved.pair_events;
+  } else {
+    throw std::invalid_argument(fmt::format("saved engine state: {} pair events for {} particles",
+                                            saved.pair_events.size(), n));
+  }
   obs_ = saved.observables;
   now_ = saved.now;
   records_ = saved.records;
@@ -93,6 +108,7 @@ EngineState EdSimulation::state() const {
   EngineState s;
   s.particles = p_;
   s.events = ev_;
+  s.pair_events = pair_ev_;
   s.queue = queue_.layout();
   s.cells = cells_.lists();
   s.observables = obs_;
@@ -127,6 +143,9 @@ void EdSimulation::setUp(int n) {
   if ((g.periodic_x && g.nx < 3) || (g.periodic_z && g.nz < 3))
     throw std::invalid_argument("a periodic direction must be at least 3 particle diameters long");
   cells_ = CellGrid(g, n);
+  // Without bottom and lid nothing rides a wall: every pair time is then exact for all
+  // future times, so a prediction may be carried over a cell crossing (pair_ev_).
+  incremental_crossings_ = cfg_.periodic_z;
 
   const double aw2 = cfg_.plate.maxAcceleration();
   bottom_curvature_ = cfg_.gravity + aw2;
@@ -146,8 +165,8 @@ void EdSimulation::advance(int i, double t) {
     // The wall carries the particle: its energy changes by the wall's work.
     const double before = particleEnergy(s);
     s.x += s.vx * dt;
-    s.z = cfg_.plate.height(t) + s.ride_offset;
-    s.vz = cfg_.plate.velocity(t);
+    s.z = plateAt(t).height + s.ride_offset;
+    s.vz = plateAt(t).velocity;
     obs_.wall_work += particleEnergy(s) - before;
   }
   s.t = t;
@@ -161,8 +180,8 @@ ParticleState EdSimulation::extrapolated(int i, double t) const {
     s.z += (s.vz - 0.5 * cfg_.gravity * dt) * dt;
     s.vz -= cfg_.gravity * dt;
   } else {
-    s.z = cfg_.plate.height(t) + s.ride_offset;
-    s.vz = cfg_.plate.velocity(t);
+    s.z = plateAt(t).height + s.ride_offset;
+    s.vz = plateAt(t).velocity;
   }
   s.t = t;
   return s;
@@ -181,10 +200,10 @@ bool EdSimulation::wallPushes(WallId wall, double t) const {
   // At the switching instant itself (a = -g up to round-off, e.g. at a take-off event) the
   // sign of the jerk says which side the next instant is on.
   if (wall != kBottom && wall != kLid) return false;
-  const double excess = cfg_.plate.acceleration(t) + cfg_.gravity;  // > 0: bottom pushes
+  const double excess = plateAt(t).acceleration + cfg_.gravity;  // > 0: bottom pushes
   const double scale = cfg_.gravity + cfg_.plate.maxAcceleration();
   double side = excess;
-  if (std::abs(excess) <= 1e-9 * scale) side = cfg_.plate.jerk(t);
+  if (std::abs(excess) <= 1e-9 * scale) side = plateAt(t).jerk;
   return wall == kBottom ? side > 0.0 : side < 0.0;
 }
 
@@ -203,7 +222,7 @@ Snapshot EdSimulation::snapshot() const {
   const int n = size();
   snap.time = now_;
   snap.step = records_;
-  snap.plate_height = cfg_.plate.height(now_);
+  snap.plate_height = plateAt(now_).height;
   snap.x.resize(n);
   snap.z.resize(n);
   snap.vx.resize(n);

@@ -5,13 +5,15 @@
 // Particles fly ballistically under gravity between instantaneous events: pair collisions
 // (exact quadratic), collisions with the sinusoidally moving bottom and lid (exact first
 // root via GapRootFinder), side walls, cell crossings, and take-off of particles riding a
-// wall. Each particle keeps one scheduled event in an indexed heap; events made stale by a
-// partner's collision are dropped lazily by collision counters; particles are advanced
-// lazily. Recording extrapolates all particles to the recording time without changing
-// the state. Cost per event O(log N), memory O(N).
+// wall. Each particle keeps one scheduled event in a calendar queue (EventQueue.hpp);
+// events made stale by a partner's collision are dropped lazily by collision counters;
+// particles are advanced lazily. Recording extrapolates all particles to the recording time
+// without changing the state. Cost per event O(1) on average (the calendar queue; O(log N)
+// at worst, for many equal times), memory O(N).
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "particles/CellGrid.hpp"
@@ -114,9 +116,14 @@ class EdSimulation {
   void setUp(int particles);
   // prediction (EventPrediction.cpp)
   void predict(int i);
+  // Schedules i's earliest event from its earliest pair event and its own crossings and walls.
+  void schedule(int i, const ParticleState& s, const Event& pair);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;
-  void predictWalls(int i, const ParticleState& s, Event& best) const;
-  void predictPairs(int i, const ParticleState& s, Event& best) const;
+  void predictWalls(int i, const ParticleState& s, Event& best, double horizon) const;
+  void predictBottomAndLid(const ParticleState& s, Event& best, double horizon) const;
+  // Pairs of i with the particles of the m stencil cells nb (earliest into best).
+  void predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
+                    Event& best) const;
   // execution (EventExecution.cpp)
   void process(int i);
   void doPair(int i, int j, Vec2 image_shift);
@@ -150,12 +157,27 @@ class EdSimulation {
   ParticleState extrapolated(int i, double t) const;
   double particleEnergy(const ParticleState& s) const;
   bool wallPushes(WallId wall, double t) const;
+  // The plate's state at t, remembered for the last t asked (most calls are at now_: each
+  // event's predictions and collision rules ask several times, and sin/cos are costly).
+  const PlateState& plateAt(double t) const {
+    if (!(plate_time_ == t)) {
+      plate_ = cfg_.plate.state(t);
+      plate_time_ = t;
+    }
+    return plate_;
+  }
   Vec2 imageShiftTo(int i, int j) const;
   void record();
 
   EngineConfig cfg_;
   std::vector<ParticleState> p_;
   std::vector<Event> ev_;
+  // Each particle's earliest pair event at its last prediction (time -inf: not known). A cell
+  // crossing leaves the trajectory unchanged, so when every pair time is exact (no particle
+  // can ride a wall) it needs to test only the newly adjacent cells against this (DynamO's
+  // approach; docs/ARCHITECTURE.md, "Event calendar").
+  std::vector<Event> pair_ev_;
+  bool incremental_crossings_ = false;
   EventQueue queue_;
   CellGrid cells_;
   std::vector<SnapshotObserver*> observers_;
@@ -168,6 +190,8 @@ class EdSimulation {
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)
   double virial_since_ = 0;
   bool rotation_ = false;
+  mutable PlateState plate_;  // plateAt's memory
+  mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 }  // namespace granwave

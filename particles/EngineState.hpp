@@ -1,9 +1,10 @@
 #pragma once
 // The engine's complete dynamic state: what a checkpoint must hold for a restored run to
-// continue bit-identically. Particles are advanced lazily (each carries its own time) and the
-// queue's layout and the cell lists decide between events at exactly equal times, so all of
-// them are kept as stored, not recomputed. Everything else
-// (cell geometry, curvature bounds) follows from the EngineConfig.
+// continue bit-identically. Particles are advanced lazily (each carries its own time), the
+// cell lists decide between pair events at exactly equal times and a crossing reuses the
+// earliest pair event found before, so all of them are kept as stored, not recomputed; the
+// queue is rebuilt from its keys (its order is a function of them). Everything else (cell
+// geometry, curvature bounds) follows from the EngineConfig.
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,9 @@ namespace granwave {
 struct EngineState {
   std::vector<ParticleState> particles;
   std::vector<Event> events;  // each particle's one scheduled event
+  // Each particle's earliest pair event at its last prediction (EdSimulation::pair_ev_);
+  // empty in states saved before it existed (then re-predicted in full at the next crossing).
+  std::vector<Event> pair_events;
   EventQueue::Layout queue;
   CellGrid::Lists cells;
   Observables observables;  // cumulative counters (the per-record ones are recomputed)

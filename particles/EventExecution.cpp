@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "particles/EdSimulation.hpp"
 #include "particles/InelasticCollapse.hpp"
@@ -97,7 +98,7 @@ bool EdSimulation::riderPresses(const ParticleState& rider, const ParticleState&
   // Relative acceleration of a flying particle with respect to a rider is
   // (0, -g - z_b''); the contact is compressed if it points against n (rider -> other).
   if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return false;
-  return (cfg_.gravity + cfg_.plate.acceleration(now_)) * n_rider_to_other.z > 0.0;
+  return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z > 0.0;
 }
 
 bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
@@ -115,8 +116,8 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
     rider.vx = vx;
   }
   s.motion = rider.motion;
-  s.ride_offset = s.z - cfg_.plate.height(now_);
-  s.vz = cfg_.plate.velocity(now_);
+  s.ride_offset = s.z - plateAt(now_).height;
+  s.vz = plateAt(now_).velocity;
   obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
   ++obs_.collisions.rests;
   return true;
@@ -215,7 +216,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     // particle joins the rigid layer on the wall.
     ParticleState& rider = a_rides ? a : b;
     const double before_rider = particleEnergy(rider);
-    rider.vz = cfg_.plate.velocity(now_);
+    rider.vz = plateAt(now_).velocity;
     obs_.dissipated_energy += before_rider - particleEnergy(rider);
     attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
   }
@@ -228,7 +229,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
     if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
       const double before_rider = particleEnergy(rider);
-      rider.vz = cfg_.plate.velocity(now_);
+      rider.vz = plateAt(now_).velocity;
       obs_.dissipated_energy += before_rider - particleEnergy(rider);
       attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
     }
@@ -236,9 +237,8 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   if (!attached) {
     // A collision with a vertical impulse knocks riders off their wall; one pushed into the
     // wall hits it at once (and rests again if the wall still pushes it).
-    const double vw = cfg_.plate.velocity(now_);
-    if (a_rides && a.vz != vw) a.motion = Motion::Ballistic;
-    if (b_rides && b.vz != vw) b.motion = Motion::Ballistic;
+    if (a_rides && a.vz != plateAt(now_).velocity) a.motion = Motion::Ballistic;
+    if (b_rides && b.vz != plateAt(now_).velocity) b.motion = Motion::Ballistic;
   }
   predict(i);
   predict(j);
@@ -270,11 +270,11 @@ void EdSimulation::doWall(int i, WallId wall) {
   switch (wall) {
     case kBottom:
       n = {0, 1};
-      vw = {0, cfg_.plate.velocity(now_)};
+      vw = {0, plateAt(now_).velocity};
       break;
     case kLid:
       n = {0, -1};
-      vw = {0, cfg_.plate.velocity(now_)};
+      vw = {0, plateAt(now_).velocity};
       break;
     case kLeft:
       n = {1, 0};
@@ -325,7 +325,7 @@ void EdSimulation::doWall(int i, WallId wall) {
   if ((wall == kBottom || wall == kLid) && pushes &&
       (separation <= cfg_.rest_velocity || pinched(i, n, rigid, -1))) {
     startRiding(i, wall);
-  } else if (s.motion != Motion::Ballistic && (s.vz != cfg_.plate.velocity(now_))) {
+  } else if (s.motion != Motion::Ballistic && (s.vz != plateAt(now_).velocity)) {
     s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity
   }
   predict(i);
@@ -334,10 +334,10 @@ void EdSimulation::doWall(int i, WallId wall) {
 void EdSimulation::startRiding(int i, WallId wall) {
   ParticleState& s = p_[i];
   const double before = particleEnergy(s);
-  const double zb = cfg_.plate.height(now_);
+  const double zb = plateAt(now_).height;
   s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
   s.z = zb + s.ride_offset;
-  s.vz = cfg_.plate.velocity(now_);
+  s.vz = plateAt(now_).velocity;
   s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
   const double after = particleEnergy(s);
@@ -390,7 +390,20 @@ void EdSimulation::doCross(int i, CrossDirection dir) {
   }
   cells_.remove(i);
   cells_.insert(i, cells_.index(cx, cz));
-  predict(i);
+  if (!incremental_crossings_ || pair_ev_[i].time == -std::numeric_limits<double>::infinity()) {
+    predict(i);
+    return;
+  }
+  // The trajectory is unchanged: the earliest pair event found before still bounds every
+  // pair of the cells that stay adjacent (stale or not: a stale one re-predicts in full when
+  // it comes due, as any stale event). Only the newly adjacent cells need testing.
+  const int step_x = dir == kCrossXPlus ? 1 : dir == kCrossXMinus ? -1 : 0;
+  const int step_z = dir == kCrossZPlus ? 1 : dir == kCrossZMinus ? -1 : 0;
+  CellGrid::Neighbour nb[3];
+  const int m = cells_.newNeighbours(cells_.cellOf(i), step_x, step_z, nb);
+  Event pair = pair_ev_[i];
+  predictPairs(i, s, nb, m, pair);
+  schedule(i, s, pair);
 }
 
 }  // namespace granwave

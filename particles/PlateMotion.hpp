@@ -5,6 +5,11 @@
 
 namespace granwave {
 
+// The plate's height and its time derivatives at one instant.
+struct PlateState {
+  double height = 0, velocity = 0, acceleration = 0, jerk = 0;
+};
+
 struct PlateMotion {
   double amplitude = 0;  // m
   double omega = 0;      // rad/s
@@ -14,6 +19,12 @@ struct PlateMotion {
   double acceleration(double t) const { return -amplitude * omega * omega * std::sin(omega * t); }
   double jerk(double t) const { return -amplitude * omega * omega * omega * std::cos(omega * t); }
   double maxAcceleration() const { return amplitude * omega * omega; }
+  // All four from one sine and cosine, each bit-identical to its function above.
+  PlateState state(double t) const {
+    const double s = std::sin(omega * t), c = std::cos(omega * t);
+    return {amplitude * s, amplitude * omega * c, -amplitude * omega * omega * s,
+            -amplitude * omega * omega * omega * c};
+  }
 };
 
 }  // namespace granwave

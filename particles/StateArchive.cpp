@@ -64,6 +64,34 @@ std::vector<T> readColumn(const h5::File& file, const std::string& path, std::si
 std::vector<int> toInts(const std::vector<std::int64_t>& v) { return {v.begin(), v.end()}; }
 std::vector<std::int64_t> toInt64(const std::vector<int>& v) { return {v.begin(), v.end()}; }
 
+void writeEvents(h5::File& file, const std::string& group, const std::vector<Event>& events) {
+  const std::string e = group + "/";
+  file.createGroup(group);
+  writeColumn<double>(file, e + "time", events, [](const Event& q) { return q.time; });
+  writeColumn<std::uint64_t>(file, e + "kind", events,
+                             [](const Event& q) { return static_cast<int>(q.kind); });
+  writeColumn<std::int64_t>(file, e + "partner", events, [](const Event& q) { return q.partner; });
+  writeColumn<std::uint64_t>(file, e + "partner_counter", events,
+                             [](const Event& q) { return q.partner_counter; });
+}
+
+std::vector<Event> readEvents(const h5::File& file, const std::string& group, std::size_t n) {
+  const std::string e = group + "/";
+  const auto time = readColumn<double>(file, e + "time", n);
+  const auto kind = readColumn<std::uint64_t>(file, e + "kind", n),
+             partner_counter = readColumn<std::uint64_t>(file, e + "partner_counter", n);
+  const auto partner = readColumn<std::int64_t>(file, e + "partner", n);
+  std::vector<Event> events(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (kind[i] > static_cast<std::uint64_t>(EventKind::TakeOff))
+      throw h5::H5Error(file.name() + ": " + e + "kind holds " + std::to_string(kind[i]) +
+                        ", valid are 0-4");
+    events[i] = {time[i], static_cast<EventKind>(kind[i]), static_cast<std::int32_t>(partner[i]),
+                 static_cast<std::uint32_t>(partner_counter[i])};
+  }
+  return events;
+}
+
 }  // namespace
 
 void writeEngineState(h5::File& file, const std::string& group, const EngineState& s) {
@@ -89,15 +117,8 @@ void writeEngineState(h5::File& file, const std::string& group, const EngineStat
                       [](const ParticleState& q) { return q.burst_start; });
   writeColumn<std::uint64_t>(file, p + "burst", ps, [](const ParticleState& q) { return q.burst; });
 
-  const std::string e = group + "/events/";
-  file.createGroup(group + "/events");
-  writeColumn<double>(file, e + "time", s.events, [](const Event& q) { return q.time; });
-  writeColumn<std::uint64_t>(file, e + "kind", s.events,
-                             [](const Event& q) { return static_cast<int>(q.kind); });
-  writeColumn<std::int64_t>(file, e + "partner", s.events,
-                            [](const Event& q) { return q.partner; });
-  writeColumn<std::uint64_t>(file, e + "partner_counter", s.events,
-                             [](const Event& q) { return q.partner_counter; });
+  writeEvents(file, group + "/events", s.events);
+  writeEvents(file, group + "/pair_events", s.pair_events);
 
   file.writeDataset(group + "/queue_keys", s.queue.keys, {s.queue.keys.size()});
   file.writeDataset(group + "/queue_ids", toInt64(s.queue.ids), {s.queue.ids.size()});
@@ -149,19 +170,10 @@ EngineState readEngineState(const h5::File& file, const std::string& group) {
     q.burst = static_cast<std::uint32_t>(burst[i]);
   }
 
-  const std::string e = group + "/events/";
-  const auto time = readColumn<double>(file, e + "time", n);
-  const auto kind = readColumn<std::uint64_t>(file, e + "kind", n),
-             partner_counter = readColumn<std::uint64_t>(file, e + "partner_counter", n);
-  const auto partner = readColumn<std::int64_t>(file, e + "partner", n);
-  s.events.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    if (kind[i] > static_cast<std::uint64_t>(EventKind::TakeOff))
-      throw h5::H5Error(file.name() + ": " + e + "kind holds " + std::to_string(kind[i]) +
-                        ", valid are 0-4");
-    s.events[i] = {time[i], static_cast<EventKind>(kind[i]), static_cast<std::int32_t>(partner[i]),
-                   static_cast<std::uint32_t>(partner_counter[i])};
-  }
+  s.events = readEvents(file, group + "/events", n);
+  // Absent in states saved before the engine kept each particle's earliest pair event.
+  if (file.exists(group + "/pair_events"))
+    s.pair_events = readEvents(file, group + "/pair_events", n);
 
   s.queue.keys = readColumn<double>(file, group + "/queue_keys", n);
   s.queue.ids = toInts(readColumn<std::int64_t>(file, group + "/queue_ids", n));

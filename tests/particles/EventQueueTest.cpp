@@ -1,8 +1,13 @@
-// The indexed heap against a trivially correct reference (linear scan), as DynamO tests
-// its event sorters.
+// The calendar queue against a trivially correct reference (linear scan), as DynamO tests
+// its event sorters, and the properties the engine relies on: ties in particle order, order
+// across calendar years, and a restored queue popping as the original.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
 #include <random>
+#include <stdexcept>
 
 #include "particles/EventQueue.hpp"
 
@@ -22,4 +27,65 @@ TEST(EventQueue, TopAlwaysMatchesLinearScanUnderRandomUpdates) {
     ASSERT_EQ(q.topTime(), *it);
     ASSERT_EQ(ref[q.top()], *it);
   }
+}
+
+TEST(EventQueue, EqualTimesComeOutInParticleOrder) {
+  granwave::EventQueue q(6);
+  for (int id : {4, 1, 5, 0, 3, 2}) q.update(id, 0.5);
+  for (int expected = 0; expected < 6; ++expected) {
+    ASSERT_EQ(q.top(), expected);
+    q.update(expected, std::numeric_limits<double>::infinity());
+  }
+}
+
+// Times spread over many decades (so over many calendar years and rebuilds), far-future and
+// infinite keys, popped in order as the engine does: the top gets a later time.
+TEST(EventQueue, PopsInTimeOrderAcrossYearsAndFarFutureTimes) {
+  const int n = 300;
+  granwave::EventQueue q(n);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int id = 0; id < n; ++id)
+    q.update(id, id % 50 == 0 ? std::numeric_limits<double>::infinity()
+                              : std::pow(10.0, 12.0 * u(rng) - 6.0));
+  q.update(7, 1e290);
+  double last = 0;
+  for (int step = 0; step < 50000; ++step) {
+    const double now = q.topTime();
+    ASSERT_GE(now, last);
+    last = now;
+    const int id = q.top();
+    const double next = step % 7 == 0 ? now * (1.0 + 10.0 * u(rng)) : now + 1e-3 * u(rng);
+    q.update(id, next);
+  }
+  EXPECT_EQ(q.time(7), 1e290);
+}
+
+// The order is a function of the keys: a queue restored from its layout (in any order of the
+// entries) pops exactly as the original.
+TEST(EventQueue, RestoredQueuePopsAsTheOriginal) {
+  const int n = 100;
+  granwave::EventQueue a(n);
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int id = 0; id < n; ++id) a.update(id, std::floor(20.0 * u(rng)) / 20.0);
+  for (int step = 0; step < 500; ++step) a.update(a.top(), a.topTime() + 0.05 * u(rng));
+  granwave::EventQueue::Layout saved = a.layout();
+  std::reverse(saved.keys.begin(), saved.keys.end());
+  std::reverse(saved.ids.begin(), saved.ids.end());
+  granwave::EventQueue b;
+  b.restore(saved);
+  for (int step = 0; step < 2000; ++step) {
+    ASSERT_EQ(a.top(), b.top());
+    ASSERT_EQ(a.topTime(), b.topTime());
+    const double next = a.topTime() + 0.05 * u(rng);
+    b.update(b.top(), next);
+    a.update(a.top(), next);
+  }
+}
+
+TEST(EventQueue, RestoreRefusesARepeatedParticleOrANanTime) {
+  granwave::EventQueue q;
+  EXPECT_THROW(q.restore({{0.1, 0.2}, {1, 1}}), std::invalid_argument);
+  EXPECT_THROW(q.restore({{0.1, std::nan("")}, {0, 1}}), std::invalid_argument);
 }
