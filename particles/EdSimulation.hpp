@@ -122,6 +122,8 @@ class EdSimulation {
   void predictWalls(int i, const ParticleState& s, Event& best, double horizon) const;
   void predictBottomAndLid(const ParticleState& s, Event& best, double horizon) const;
   // Pairs of i with the particles of the m stencil cells nb (earliest into best).
+  void predictPairWith(int i, const ParticleState& s, double speed_i, int j,
+                       const CellGrid::Neighbour& nb, Event& best) const;
   void predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
                     Event& best) const;
   // execution (EventExecution.cpp)
@@ -142,6 +144,7 @@ class EdSimulation {
   bool slidesIntoSupport(double rx, double dvx) const {
     return cfg_.tangential.friction <= 0.0 && rx * dvx < 0.0;
   }
+  void settleRiders(int i, int j, Vec2 n, Vec2 r, bool pressed, double separation);
   bool pinched(int i, Vec2 away, Motion rigid, int exclude) const;
   void noteCollision(int i, int partner);
   // Books a restitution-law pair impact at normal speed v_n (Observables::pair_impact_*).

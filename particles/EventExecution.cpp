@@ -209,7 +209,19 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
   noteCollision(i, j);
   noteCollision(j, i);
-  const double separation = -pairNormalSpeed(n, c.v1, c.v2);
+  if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, pressed, -pairNormalSpeed(n, c.v1, c.v2));
+  predict(i);
+  predict(j);
+}
+
+// After an impact involving a rider (i's partner j; n from j to i, r = x_i - x_j): the other
+// particle comes to rest on a pressing rider or is pinched against it and joins the rigid layer;
+// otherwise a rider given a vertical impulse leaves its wall.
+void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, bool pressed, double separation) {
+  ParticleState& a = p_[i];
+  ParticleState& b = p_[j];
+  const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
+  const double rx = r.x, rz = r.z;
   bool attached = false;
   if (pressed && separation <= cfg_.rest_velocity) {
     // Came to rest on a pressing rider: the rider's support takes the impulse, the other
@@ -240,8 +252,6 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     if (a_rides && a.vz != plateAt(now_).velocity) a.motion = Motion::Ballistic;
     if (b_rides && b.vz != plateAt(now_).velocity) b.motion = Motion::Ballistic;
   }
-  predict(i);
-  predict(j);
 }
 
 bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {

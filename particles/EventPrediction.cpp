@@ -194,81 +194,85 @@ void EdSimulation::predictBottomAndLid(const ParticleState& s, Event& best, doub
   }
 }
 
-void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
-                                Event& best) const {
+// The earliest pair event of i (state s, speed speed_i) with j seen through the image nb, if it
+// comes before `best`.
+void EdSimulation::predictPairWith(int i, const ParticleState& s, double speed_i, int j,
+                                   const CellGrid::Neighbour& nb, Event& best) const {
   const double d = cfg_.diameter, g = cfg_.gravity;
-  const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
-  for (int c = 0; c < m; ++c) {
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
-      if (j == i) continue;
-      const ParticleState& q = p_[j];
-      const double dt = now_ - q.t;
-      double oz, ovz;
-      if (q.motion == Motion::Ballistic) {
-        oz = q.z + (q.vz - 0.5 * g * dt) * dt;
-        ovz = q.vz - g * dt;
-      } else {
-        oz = plateAt(now_).height + q.ride_offset;  // sin/cos only if a rider is met
-        ovz = plateAt(now_).velocity;
-      }
-      const double rx = s.x - (q.x + q.vx * dt) - nb[c].shift_x;
-      const double rz = s.z - oz - nb[c].shift_z;
-      const double vx = s.vx - q.vx, vz = s.vz - ovz;
-      const bool linear =
-          s.motion == q.motion || (s.motion != Motion::Ballistic && q.motion != Motion::Ballistic);
-      if (linear && s.motion == q.motion && s.motion != Motion::Ballistic) {
-        // Both carried by the same wall: they can only meet horizontally.
-        const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
-        const double tau = riderPairCollisionTime(rx, rz, vx, d, tol);
-        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
-        continue;
-      }
-      if (linear) {
-        // Same acceleration for both: the relative motion is a straight line.
-        double tau = pairCollisionTime(rx, rz, vx, vz, d);
-        // Touching "at once": only if the approach is more than round-off (rare, so the
-        // tolerance, which costs square roots, is computed only here).
-        if (tau == 0.0) {
-          const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
-          tau = pairCollisionTime(rx, rz, vx, vz, d, tol);
-        }
-        if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
-        continue;
-      }
+  const ParticleState& q = p_[j];
+  const double dt = now_ - q.t;
+  double oz, ovz;
+  if (q.motion == Motion::Ballistic) {
+    oz = q.z + (q.vz - 0.5 * g * dt) * dt;
+    ovz = q.vz - g * dt;
+  } else {
+    oz = plateAt(now_).height + q.ride_offset;  // sin/cos only if a rider is met
+    ovz = plateAt(now_).velocity;
+  }
+  const double rx = s.x - (q.x + q.vx * dt) - nb.shift_x;
+  const double rz = s.z - oz - nb.shift_z;
+  const double vx = s.vx - q.vx, vz = s.vz - ovz;
+  const bool linear =
+      s.motion == q.motion || (s.motion != Motion::Ballistic && q.motion != Motion::Ballistic);
+  if (linear && s.motion == q.motion && s.motion != Motion::Ballistic) {
+    // Both carried by the same wall: they can only meet horizontally.
+    const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
+    const double tau = riderPairCollisionTime(rx, rz, vx, d, tol);
+    if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
+    return;
+  }
+  if (linear) {
+    // Same acceleration for both: the relative motion is a straight line.
+    double tau = pairCollisionTime(rx, rz, vx, vz, d);
+    // Touching "at once": only if the approach is more than round-off (rare, so the
+    // tolerance, which costs square roots, is computed only here).
+    if (tau == 0.0) {
       const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
-      const double r2 = rx * rx + rz * rz;
-      if (r2 <= d * d * (1.0 + 2e-10)) {
-        // Touching a rider with no relative normal motion while pressed: rests on it now.
-        const double dist = std::sqrt(r2);
-        const double rate = (rx * vx + rz * vz) / dist;
-        ParticleState o = q;
-        o.z = oz;
-        const Vec2 n{rx / dist, rz / dist};  // from j to i
-        const bool presses = s.motion == Motion::Ballistic ? riderPresses(o, s, n)
-                                                           : riderPresses(s, o, {-n.x, -n.z});
-        // rx * vx is the same whichever of the two is the flyer.
-        if (std::abs(rate) <= cfg_.rest_velocity && presses && !slidesIntoSupport(rx, vx)) {
-          if (now_ < best.time) best = {now_, EventKind::Pair, j, q.counter};
-          continue;
-        }
-      }
-      // One rides a wall, the other flies: the relative acceleration is bounded by
-      // g + A w^2, and so is the curvature of the distance |r| - d (its other term is >= 0).
-      // Search only until either partner's next event: both re-predict then.
-      const double horizon = std::min(best.time, queue_.time(j));
-      if (horizon <= now_) continue;
-      const double sx = nb[c].shift_x, sz = nb[c].shift_z;
-      auto gap = [&](double t) {
-        const ParticleState a = extrapolated(i, t);
-        const ParticleState b = extrapolated(j, t);
-        const double dx = a.x - b.x - sx, dz = a.z - b.z - sz;
-        const double dist = std::sqrt(dx * dx + dz * dz);
-        return GapRate{dist - d, (dx * (a.vx - b.vx) + dz * (a.vz - b.vz)) / dist};
-      };
-      const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, tol});
-      if (t < best.time) best = {t, EventKind::Pair, j, q.counter};
+      tau = pairCollisionTime(rx, rz, vx, vz, d, tol);
+    }
+    if (now_ + tau < best.time) best = {now_ + tau, EventKind::Pair, j, q.counter};
+    return;
+  }
+  const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
+  const double r2 = rx * rx + rz * rz;
+  if (r2 <= d * d * (1.0 + 2e-10)) {
+    // Touching a rider with no relative normal motion while pressed: rests on it now.
+    const double dist = std::sqrt(r2);
+    const double rate = (rx * vx + rz * vz) / dist;
+    ParticleState o = q;
+    o.z = oz;
+    const Vec2 n{rx / dist, rz / dist};  // from j to i
+    const bool presses =
+        s.motion == Motion::Ballistic ? riderPresses(o, s, n) : riderPresses(s, o, {-n.x, -n.z});
+    // rx * vx is the same whichever of the two is the flyer.
+    if (std::abs(rate) <= cfg_.rest_velocity && presses && !slidesIntoSupport(rx, vx)) {
+      if (now_ < best.time) best = {now_, EventKind::Pair, j, q.counter};
+      return;
     }
   }
+  // One rides a wall, the other flies: the relative acceleration is bounded by
+  // g + A w^2, and so is the curvature of the distance |r| - d (its other term is >= 0).
+  // Search only until either partner's next event: both re-predict then.
+  const double horizon = std::min(best.time, queue_.time(j));
+  if (horizon <= now_) return;
+  const double sx = nb.shift_x, sz = nb.shift_z;
+  auto gap = [&](double t) {
+    const ParticleState a = extrapolated(i, t);
+    const ParticleState b = extrapolated(j, t);
+    const double dx = a.x - b.x - sx, dz = a.z - b.z - sz;
+    const double dist = std::sqrt(dx * dx + dz * dz);
+    return GapRate{dist - d, (dx * (a.vx - b.vx) + dz * (a.vz - b.vz)) / dist};
+  };
+  const double t = firstClosingRoot(gap, pair_curvature_, now_, horizon, {1e-10 * d, tol});
+  if (t < best.time) best = {t, EventKind::Pair, j, q.counter};
+}
+
+void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::Neighbour* nb, int m,
+                                Event& best) const {
+  const double speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
+  for (int c = 0; c < m; ++c)
+    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j))
+      if (j != i) predictPairWith(i, s, speed_i, j, nb[c], best);
 }
 
 }  // namespace granwave
