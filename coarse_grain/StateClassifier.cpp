@@ -131,13 +131,14 @@ StateResult classifyState(const std::vector<Snapshot>& cycles, double width, dou
   }
   r.bonds_kept = bondsKept(cycles.front(), cycles.back(), width, periodic_x,
                            opt.bond_cutoff * diameter, opt.broken_beyond * diameter);
-  if (r.bonds_kept < opt.caged_fraction)
-    r.state = LayerState::liquid_like;
-  else if (r.mean_abs_psi6 > opt.crystal_threshold)
-    r.state = LayerState::crystal;
-  else
-    r.state = LayerState::amorphous;
+  r.state =
+      labelLayer(!(r.bonds_kept < opt.caged_fraction), r.mean_abs_psi6, opt.crystal_threshold);
   return r;
+}
+
+LayerState labelLayer(bool caged, double psi6, double crystal_threshold) {
+  if (!caged) return LayerState::liquid_like;
+  return psi6 > crystal_threshold ? LayerState::crystal : LayerState::amorphous;
 }
 
 }  // namespace granwave

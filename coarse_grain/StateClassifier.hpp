@@ -62,6 +62,10 @@ enum class LayerState { crystal, amorphous, liquid_like };
 
 std::string_view toString(LayerState state);  // "crystal", "amorphous", "liquid-like"
 
+// The label both solid criteria give: liquid-like unless caged, then crystal if the mean
+// |psi6| exceeds the threshold, else amorphous.
+LayerState labelLayer(bool caged, double psi6, double crystal_threshold);
+
 struct StateOptions {
   HexaticOptions hexatic;          // psi6 neighbours: 1.2 d, >= 3 bonds
   double bond_cutoff = 1.2;        // d, a bond at the first cycle

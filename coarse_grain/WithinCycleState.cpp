@@ -39,12 +39,7 @@ CycleLabel labelCycle(const std::vector<Snapshot>& phases, double width, double 
   const Snapshot& densest = phases[static_cast<std::size_t>(c.compact_phase)];
   c.psi6 =
       hexaticOrder(densest.x, densest.z, width, diameter, periodic_x, opt.hexatic).mean_abs_psi6;
-  if (c.coordination < opt.caged_coordination)
-    c.state = LayerState::liquid_like;
-  else if (c.psi6 > opt.crystal_threshold)
-    c.state = LayerState::crystal;
-  else
-    c.state = LayerState::amorphous;
+  c.state = labelLayer(!(c.coordination < opt.caged_coordination), c.psi6, opt.crystal_threshold);
   return c;
 }
 
