@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "coarse_grain/FieldsFile.hpp"
@@ -49,6 +50,9 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
                   "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
       ->check(CLI::Range(0.01, 100.0))
       ->check(finiteNumber());
+  cmd->add_flag("--state-fields", opt.state_fields,
+                "Also average the fields over the period-1 and the period-2 windows of the "
+                "layer separately (/states; about twice the memory)");
 }
 
 int runFields(const FieldsOptions& opt) {
@@ -96,12 +100,13 @@ int runFields(const FieldsOptions& opt) {
   PhaseAveragerConfig cfg = phaseAveragerConfig(scene, P, opt.blocks, discard);
   cfg.total_cycles = static_cast<int>(run.recordCount() / M);
   PhaseAverager averager(cfg);
-  StatePhaseAverager states(cfg);
+  std::optional<StatePhaseAverager> states;
+  if (opt.state_fields) states.emplace(cfg);
   PatternSampler patterns({M});
   for (std::size_t i = 0; i < run.frameCount(); ++i) {
     const Snapshot s = run.frame(i);
     averager.observe(s);
-    states.observe(s);
+    if (states) states->observe(s);
     patterns.observe(s);
   }
 
@@ -110,7 +115,7 @@ int runFields(const FieldsOptions& opt) {
   FieldsAnalysis a = analyseFields(
       averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
   a.context.period_doubling = period_doubling;
-  addStateFields(a, states);
+  if (states) addStateFields(a, *states);
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
                                 scene.particles.diameter, scene.container.periodic_x);
   writeFieldsFile(out, a);

@@ -16,6 +16,7 @@ struct FieldsOptions {
   int blocks = 5;
   std::string discard = "auto";
   double front_threshold = 0.5;  // T~_g / T0 of a front (paper: 0.5)
+  bool state_fields = false;     // also average the fields per layer state (/states)
 };
 
 void addFieldsCommand(CLI::App& app, FieldsOptions& options);

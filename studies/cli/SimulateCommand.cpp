@@ -80,9 +80,10 @@ class PooledPairImpacts : public SnapshotObserver {
 // What a checkpoint may only be continued by: the same resolved scene, the same outputs and
 // the same build (another build need not give the same bits).
 std::string runIdentity(const Scene& scene, const SimulateOptions& opt) {
-  return fmt::format("{}\nrun_file={} fields={} fields_period={} fields_blocks={}\nbuild={}\n",
-                     sceneToToml(scene), !opt.no_output, !opt.fields.empty(), opt.fields_period,
-                     opt.fields_blocks, buildIdentity());
+  return fmt::format(
+      "{}\nrun_file={} fields={} fields_period={} fields_blocks={} state_fields={}\nbuild={}\n",
+      sceneToToml(scene), !opt.no_output, !opt.fields.empty(), opt.fields_period, opt.fields_blocks,
+      opt.state_fields, buildIdentity());
 }
 
 double processCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -110,14 +111,16 @@ class SimulationRun {
     if (!opt.fields.empty()) {
       averager_ = std::make_unique<PhaseAverager>(
           phaseAveragerConfig(scene_, opt.fields_period, opt.fields_blocks, -1));
-      states_ = std::make_unique<StatePhaseAverager>(averager_->config());
       patterns_ =
           std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
       accumulating_.emplace_back("phase_averager", averager_.get());
       accumulating_.emplace_back("patterns", patterns_.get());
-      accumulating_.emplace_back("state_averager", states_.get());
       impacts_ = std::make_unique<PooledPairImpacts>(*averager_, scene_.drive.frequency);
       accumulating_.emplace_back("pair_impacts", &impacts_->histogram);
+    }
+    if (!opt.fields.empty() && opt.state_fields) {
+      states_ = std::make_unique<StatePhaseAverager>(averager_->config());
+      accumulating_.emplace_back("state_averager", states_.get());
     }
   }
 
@@ -153,10 +156,10 @@ class SimulationRun {
     if (averager_) {
       sim_->addObserver(averager_.get());
       sim_->addObserver(patterns_.get());
-      sim_->addObserver(states_.get());
       sim_->addObserver(impacts_.get());  // after the averager: its first pooled cycle
       sim_->setPairImpactObserver(&impacts_->histogram);
     }
+    if (states_) sim_->addObserver(states_.get());
     if (!opt_.quiet) sim_->addObserver(&progress_);
     initial_energy_ = resumed_ ? loaded_.ledger.initial_energy : totalEnergy(sim_->snapshot().obs);
   }
@@ -329,7 +332,7 @@ class SimulationRun {
     FieldsAnalysis a = analyseFields(*averager_, fieldsContext(scene_, "live: " + opt_.scene_path,
                                                                sceneToToml(scene_), layer_period));
     summarisePeriodDoubling(in, a.context.period_doubling);
-    addStateFields(a, *states_);
+    if (states_) addStateFields(a, *states_);
     a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
                                   scene_.particles.diameter, scene_.container.periodic_x);
     return a;
@@ -379,6 +382,9 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
       ->check(CLI::Range(1, 4));
   cmd->add_option("--fields-blocks", opt.fields_blocks, "Blocks of cycles for --fields")
       ->check(CLI::Range(2, 50));
+  cmd->add_flag("--state-fields", opt.state_fields,
+                "With --fields: also average the fields over the period-1 and the period-2 "
+                "windows of the layer separately (/states; about twice the memory)");
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Save a checkpoint every this many seconds of wall time (and on Ctrl-C); "
                   "the same command then continues a killed run from it")

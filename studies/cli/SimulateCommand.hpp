@@ -21,6 +21,7 @@ struct SimulateOptions {
   std::string fields;      // live phase-averaged fields file (empty = none)
   int fields_period = 2;   // cycles per phase window
   int fields_blocks = 5;
+  bool state_fields = false;    // also average the fields per layer state (/states)
   double checkpoint_every = 0;  // s of wall time between checkpoints; 0 = none
 };
 

@@ -42,7 +42,8 @@ RunRecord RunCache::record(const RunRequest& request) const {
     for (const std::string& v : request.variables) key += v + "\n";
   }
   if (request.kind == RunKind::Particles && request.fields)
-    key += fmt::format("window={} blocks={}\n", request.window_cycles, request.blocks);
+    key += fmt::format("window={} blocks={}{}\n", request.window_cycles, request.blocks,
+                       request.state_fields ? " states" : "");
   key += build_id_;
   RunRecord r;
   r.request = request;

@@ -21,6 +21,9 @@ struct RunRequest {
   bool fields = true;
   int window_cycles = 2;
   int blocks = 5;
+  // Also the fields of the period-1 and the period-2 windows (simulate --state-fields): about
+  // twice the fields' memory and file size, so only for runs whose states a study reads.
+  bool state_fields = false;
   // Lammps: the executable, the deck's text (part of the cache key) and its -var arguments
   // (the scheduler adds -in, -log and the output file).
   std::string program, deck_path, deck_text;

@@ -42,6 +42,7 @@ std::vector<std::string> childArguments(const RunRecord& r, double checkpoint_ev
     a.insert(a.end(),
              {"--fields", r.fieldsPath(), "--fields-period", std::to_string(q.window_cycles),
               "--fields-blocks", std::to_string(q.blocks)});
+  if (q.fields && q.state_fields) a.push_back("--state-fields");
   if (checkpoint_every > 0)
     a.insert(a.end(), {"--checkpoint-every", fmt::format("{}", checkpoint_every)});
   return a;

@@ -192,6 +192,7 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
 void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<RunRequest>& into) {
   const std::string seed = fmt::format("run.seed={}", sd);
   const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
+  // Only the full model's runs are read state by state (analyseStates).
   auto push = [&](const std::string& tag, std::vector<std::string> overrides) {
     overrides.push_back(fmt::format("run.duration={}", formatCompact(c_.duration)));
     RunRequest q = runRequest(RunKind::Particles,
@@ -199,6 +200,7 @@ void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<
                               c_.scenes.scene(f, law, overrides));
     q.window_cycles = c_.window;
     q.blocks = c_.blocks;
+    q.state_fields = tag.empty();
     into.push_back(std::move(q));
   };
   push("", {seed});

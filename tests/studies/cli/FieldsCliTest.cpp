@@ -99,6 +99,32 @@ TEST_F(FieldsCli, WritesFieldsFileWithGridProfilesFrontsAndSidecar) {
   fs::remove(dir_ / "f.xdmf");
 }
 
+// The state-conditioned averages double the fields' memory, so they are made only on request
+// (--state-fields); then /states counts the windows pooled as period 1 or as period 2.
+TEST_F(FieldsCli, StateFieldsAreWrittenOnlyWhenAsked) {
+  for (const bool asked : {false, true}) {
+    const Result r = run(std::string("fields wet.h5 -o f.h5") + (asked ? " --state-fields" : ""));
+    ASSERT_EQ(r.code, 0) << r.err;
+    {
+      auto f = granwave::h5::File::openReadOnly((dir_ / "f.h5").string());
+      ASSERT_EQ(f.isGroup("/states"), asked);
+      if (asked) {
+        const auto w1 = f.readAttribute<std::int64_t>("/states", "windows_period1");
+        const auto w2 = f.readAttribute<std::int64_t>("/states", "windows_period2");
+        EXPECT_GE(w1, 0);
+        EXPECT_GE(w2, 0);
+        // The state averages start with the series' first window after the steady-state
+        // detector fired (docs/classification.md), so they hold at most the series' windows.
+        EXPECT_GE(w1 + w2, 1);
+        EXPECT_LE(w1 + w2,
+                  static_cast<std::int64_t>(f.shape("/period_doubling/f2_strength").at(0)));
+      }
+    }
+    fs::remove(dir_ / "f.h5");
+    fs::remove(dir_ / "f.xdmf");
+  }
+}
+
 TEST_F(FieldsCli, TextFileIsRejected) {
   std::ofstream(dir_ / "text.h5") << "not hdf5\n";
   expectCleanFailure(run("fields text.h5 -o f.h5"), "text.h5");

@@ -1,17 +1,22 @@
 #!/bin/sh
 # A sweep killed with SIGKILL half way and run again gives the same results as an
-# uninterrupted one: the same /results numbers (run costs aside) and bit-identical particle
-# runs; no run of the killed study survives it (its children get SIGTERM, checkpoint and
-# stop), and the particle run it was making continues from its checkpoint.
-# Usage: sweep_resume.sh GRANWAVE STUDY.toml WORKDIR
+# uninterrupted one (REFERENCE: the tiny-study fixture's output directory, made without
+# checkpoints): the same /results numbers (run costs aside) and bit-identical particle runs;
+# no run of the killed study survives it (its children get SIGTERM, checkpoint and stop), and
+# the particle run it was making continues from its checkpoint.
+# Usage: sweep_resume.sh GRANWAVE STUDY.toml REFERENCE WORKDIR
 set -eu
 granwave=$1
 study=$2
-work=$3
+reference=$3
+work=$4
 identical="$(dirname "$0")/../../tools/h5_identical.py"
+[ -f "$reference/results.h5" ] || {
+  echo "sweep_resume: no $reference/results.h5 (the tiny-study fixture makes it)" >&2
+  exit 1
+}
 rm -rf "$work"
 mkdir -p "$work"
-"$granwave" study "$study" -o "$work/whole" -q -j 2 --no-report --checkpoint-every 0.2
 
 # A particle run still going with a checkpoint (its record not yet written): the run whose
 # checkpoint the resumed study must continue from.
@@ -73,7 +78,7 @@ grep -Eq "(^|[^0-9])$done_before reused" "$work/resume.log" || {
   exit 1
 }
 # Same numbers; the cost chart's CPU times are measurements of this machine, not results.
-"$identical" "$work/whole/results.h5" "$work/killed/results.h5" --only /results \
+"$identical" "$reference/results.h5" "$work/killed/results.h5" --only /results \
   --exclude /results/wave_fronts/cost
 grep -l "continuing from" "$work"/killed/runs/particles-*.log > /dev/null 2>&1 || {
   echo "sweep_resume: no particle run continued from a checkpoint" >&2
@@ -81,7 +86,7 @@ grep -l "continuing from" "$work"/killed/runs/particles-*.log > /dev/null 2>&1 |
 }
 # Particle runs: bit-identical trajectories, observables and fields; only the provenance
 # differs (it names the output directory of each study).
-for f in "$work"/whole/runs/particles-*.h5; do
+for f in "$reference"/runs/particles-*.h5; do
   g="$work/killed/runs/$(basename "$f")"
   case "$f" in
     *.fields.h5) "$identical" "$f" "$g" --exclude /parameters ;;
