@@ -16,6 +16,9 @@
 //   /parameters                completed (int64 1/0), summary (string, optional)
 //     scene                    string dataset: the scene TOML as given
 //     provenance               program_version, command_line, seed (uint64)
+//   /granwave/pair_impacts     runs with phase-averaged fields only: the pair-impact
+//                              normal-speed histogram over the fields' pooled cycles,
+//                              counts [phase bins][speed bins] (PairImpactHistogram.hpp)
 //
 // step: int64 [n] (the snapshot's recording index); time: double [n], unit "s".
 // Every value dataset has a string attribute "unit", in the H5MD units-module notation
@@ -58,6 +61,9 @@ inline const std::string kParameters = "/parameters";
 inline const std::string kScene = "/parameters/scene";
 inline const std::string kProvenance = "/parameters/provenance";
 inline const std::string kCreatorName = "granwave";
+// Not an H5MD group (the format leaves the root open to a program's own data); outside
+// /observables, whose every member MDAnalysis reads as a time series.
+inline const std::string kPairImpacts = "/granwave/pair_impacts";
 
 // Observables chunk: 1024 records (8 KiB of doubles), written a chunk at a time.
 inline constexpr std::size_t kObservableChunk = 1024;

@@ -321,6 +321,13 @@ void H5mdWriter::finish(bool complete, const std::string& summary,
   s.finished = true;
 }
 
+void H5mdWriter::writePairImpacts(const PairImpactHistogram& impacts) {
+  State& s = *state_;
+  if (s.finished || s.file().exists(h5md::kPairImpacts))
+    throw std::logic_error(s.atomic.target() + ": pair impacts written after finish() or twice");
+  impacts.saveState(s.file(), h5md::kPairImpacts);
+}
+
 const std::string& H5mdWriter::path() const { return state_->atomic.target(); }
 std::size_t H5mdWriter::recordCount() const { return state_->records; }
 std::size_t H5mdWriter::frameCount() const { return state_->frames; }

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "particles/H5mdLayout.hpp"
+#include "particles/PairImpactHistogram.hpp"
 #include "particles/Snapshot.hpp"
 
 namespace granwave {
@@ -37,6 +38,10 @@ class H5mdWriter : public SnapshotObserver {
   // interrupted run saved as RUN.h5.interrupted).
   void finish(bool complete, const std::string& summary = "",
               const std::string& final_path_override = "");
+
+  // Stores the run's pair-impact normal-speed histogram at h5md::kPairImpacts (once, before
+  // finish(); std::logic_error otherwise).
+  void writePairImpacts(const PairImpactHistogram& impacts);
 
   // Writes out the buffered observables and saves a copy of the file as it is now at
   // `copy_path` (atomically), for a restart to continue from.

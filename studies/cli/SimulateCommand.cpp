@@ -17,6 +17,7 @@
 #include "particles/EdSimulation.hpp"
 #include "particles/H5mdWriter.hpp"
 #include "particles/InitialState.hpp"
+#include "particles/PairImpactHistogram.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/FieldsSetup.hpp"
 #include "studies/cli/OptionChecks.hpp"
@@ -46,6 +47,34 @@ class CenterOfMassSeries : public SnapshotObserver, public Checkpointable {
     height = file.readDataset<double>(group + "/height");
   }
   std::vector<double> height;
+};
+
+// The normal speeds of the pair impacts over the fields' phase window and pooled cycles (from
+// the averager's first pooled cycle, known once the layer is steady, to its last whole
+// cycle), for the momentum-transfer study's binary-impact estimate (docs/studies.md).
+class PooledPairImpacts : public SnapshotObserver {
+ public:
+  PooledPairImpacts(const PhaseAverager& averager, double frequency)
+      : histogram(bins(averager.config(), frequency)), averager_(averager), frequency_(frequency) {}
+  void observe(const Snapshot&) override {
+    const int first = averager_.firstPooledCycle();
+    if (first >= 0) histogram.startAt(first / frequency_);
+  }
+  PairImpactHistogram histogram;
+
+ private:
+  static PairImpactBins bins(const PhaseAveragerConfig& c, double frequency) {
+    PairImpactBins b;
+    b.speed_max = 2.0;  // m/s; 5 mm/s bins resolve the wet law's onset at ~0.07 m/s
+    b.speed_bins = 400;
+    b.period = c.cycles_per_window / frequency;
+    b.phase_bins = c.samples_per_cycle * c.cycles_per_window;
+    b.start_time = 1e300;  // until the layer is steady
+    b.end_time = c.total_cycles / frequency;
+    return b;
+  }
+  const PhaseAverager& averager_;
+  double frequency_;
 };
 
 // What a checkpoint may only be continued by: the same resolved scene, the same outputs and
@@ -86,6 +115,8 @@ class SimulationRun {
           std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
       accumulating_.emplace_back("phase_averager", averager_.get());
       accumulating_.emplace_back("patterns", patterns_.get());
+      impacts_ = std::make_unique<PooledPairImpacts>(*averager_, scene_.drive.frequency);
+      accumulating_.emplace_back("pair_impacts", &impacts_->histogram);
     }
     if (!opt.fields.empty() && opt.state_fields) {
       states_ = std::make_unique<StatePhaseAverager>(averager_->config());
@@ -125,6 +156,8 @@ class SimulationRun {
     if (averager_) {
       sim_->addObserver(averager_.get());
       sim_->addObserver(patterns_.get());
+      sim_->addObserver(impacts_.get());  // after the averager: its first pooled cycle
+      sim_->setPairImpactObserver(&impacts_->histogram);
     }
     if (states_) sim_->addObserver(states_.get());
     if (!opt_.quiet) sim_->addObserver(&progress_);
@@ -261,6 +294,7 @@ class SimulationRun {
     std::optional<FieldsAnalysis> fields;
     if (averager_ && status.completed) fields = analyseLiveFields(in);
     if (writer_) {
+      if (impacts_) writer_->writePairImpacts(impacts_->histogram);
       const std::string stored = formatRunSummary(in, false);
       if (status.completed) {
         writer_->finish(true, stored);
@@ -313,6 +347,7 @@ class SimulationRun {
   std::unique_ptr<PhaseAverager> averager_;
   std::unique_ptr<PatternSampler> patterns_;
   std::unique_ptr<StatePhaseAverager> states_;
+  std::unique_ptr<PooledPairImpacts> impacts_;
   NamedCheckpointables accumulating_{{"center_of_mass", &com_}};
   ProgressReporter progress_;
 

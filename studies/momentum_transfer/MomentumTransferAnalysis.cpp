@@ -179,6 +179,7 @@ void rmsDecomposition(const std::vector<std::pair<int, int>>& used, int law, See
 void analysePair(const MomentumTransferConfig& c, const RunSet& runs, SeedPair& p) {
   if (!readLayers(c, runs, p)) return;
   const std::vector<bool> select = waveWindow(c, p);
+  p.wave = select;
   waveRatios(c, select, p);
   const std::vector<std::pair<int, int>> used = cellsInEveryBlock(select, p);
   for (int law = 0; law < kLaws && !used.empty(); ++law) rmsDecomposition(used, law, p);
@@ -399,6 +400,10 @@ MomentumTransferResults analyseMomentumTransfer(const MomentumTransferConfig& c,
   a.n_wave = std::max(1, static_cast<int>(std::lround(c.wave_duration * a.per_cycle)));
   a.n_margin = static_cast<int>(std::lround(c.margin * a.per_cycle));
   combineSeeds(a);
+  std::vector<int> seeds;
+  std::vector<std::vector<bool>> waves;
+  for (const SeedPair* p : ok) seeds.push_back(p->seed), waves.push_back(p->wave);
+  a.binary_impact = binaryImpactEstimate(c, runs, seeds, waves);
   waveMaps(a);
   a.profiles = impactProfiles(c, a);
   return a;
@@ -429,6 +434,7 @@ void writeMomentumTransferResults(h5::File& f, const MomentumTransferConfig& c,
   putValue(f, kRoot, "min_area_fraction", c.min_area_fraction);
   putValue(f, kRoot, "min_rms", c.min_rms);
   writeSeeds(f, a);
+  writeBinaryImpactEstimate(f, kRoot, a.binary_impact);
   if (a.tau.empty()) return;
   writeWave(f, a);
   writeProfiles(f, a.profiles);

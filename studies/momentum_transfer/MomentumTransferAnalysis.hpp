@@ -10,6 +10,7 @@
 #include "h5/File.hpp"
 #include "studies/framework/Measurement.hpp"
 #include "studies/framework/Study.hpp"
+#include "studies/momentum_transfer/BinaryImpactEstimate.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 
@@ -45,6 +46,7 @@ struct SeedPair {
   double r_signal = NAN;                     // sqrt(S^2_dry / S^2_wet) over the window
   double above_one = NAN;                    // fraction of the cells of r~_x with r_x > 1
   std::vector<double> row_mean_around_wave;  // r~_x(t) at the study's tau
+  std::vector<bool> wave;                    // the phases of the wave window
 };
 
 // Mean over seeds of a profile at one phase per seed and layer, with a one-sigma band.
@@ -71,6 +73,7 @@ struct MomentumTransferResults {
   std::vector<double> tau, row_mean, row_error;  // around the wave, from the wet onset
   std::vector<double> map;                       // [z][tau], mean over seeds
   ImpactProfiles profiles;                       // when some seed has both runs
+  BinaryImpactEstimate binary_impact;            // <(1+e_dry)/(1+e_wet)> over the wave's impacts
   std::vector<const SeedPair*> ok() const;       // the seeds with both runs usable
 };
 

@@ -1,7 +1,5 @@
 #include "studies/stability/SeedBootstrap.hpp"
 
-#include <algorithm>
-#include <cmath>
 #include <random>
 
 #include "studies/stability/StabilityFeatures.hpp"
@@ -45,9 +43,6 @@ SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& 
   for (const FeatureCheck& c : checkPaperFeatures(revote(grid, s, all)))
     reference[c.key] = c.verdict;
 
-  const std::size_t NF = grid.frequencies.size();
-  std::vector<double> sum[2], sum2[2];
-  for (int c = 0; c < 2; ++c) sum[c].assign(NF, 0), sum2[c].assign(NF, 0);
   std::mt19937_64 rng(20150415);
   for (int r = 0; r < resamples; ++r) {
     std::vector<std::size_t> draw(seeds);
@@ -55,18 +50,7 @@ SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& 
     const StabilityGrid g = revote(grid, s, draw);
     for (const FeatureCheck& c : checkPaperFeatures(g))
       b.verdict_agreement[c.key] += c.verdict == reference[c.key] ? 1.0 : 0.0;
-    for (int c = 0; c < 2; ++c) {
-      const std::vector<double> n = g.symbolDifferencesPerFrequency(kSolidCriteria[c]);
-      for (std::size_t i = 0; i < NF; ++i) sum[c][i] += n[i], sum2[c][i] += n[i] * n[i];
-    }
   }
-  for (int c = 0; c < 2; ++c)
-    for (std::size_t i = 0; i < NF; ++i) {
-      const double mean = sum[c][i] / resamples;
-      b.differences_mean[c].push_back(mean);
-      b.differences_std[c].push_back(
-          std::sqrt(std::max(0.0, sum2[c][i] / resamples - mean * mean)));
-    }
   for (const auto& [key, verdict] : reference) b.verdict_agreement.try_emplace(key, 0.0);
   for (auto& [key, agreeing] : b.verdict_agreement) agreeing /= resamples;
   return b;

@@ -7,9 +7,9 @@
 // draws as many seeds as the study ran, with replacement, from the seeds it ran (the same
 // draw at every point and for both laws, as a seed is one whole sweep), votes again, and
 // checks the features again. Reported: for each feature, the share of resamples whose
-// verdict equals the full grid's (1: no seed choice changes it; near 1/2: a coin flip), and
-// for each frequency the dry-wet difference count, its mean and standard deviation over the
-// resamples, for each solid criterion. With one seed every resample is the grid itself.
+// verdict equals the full grid's (1: no seed choice changes it; near 1/2: a coin flip). With
+// one seed every resample is the grid itself. (The dry-wet difference counts have their own
+// bootstrap, DifferenceBootstrap.hpp.)
 // The draw is a fixed 64-bit Mersenne Twister sequence (index = draw mod seeds), so the
 // bootstrap is the same on every build.
 #include <map>
@@ -37,8 +37,6 @@ struct SeedBootstrap {
   int resamples = 0;
   // Feature key -> share of resamples with the full grid's verdict.
   std::map<std::string, double> verdict_agreement;
-  // [criterion][frequency]: the dry-wet difference count over the resamples.
-  std::vector<double> differences_mean[2], differences_std[2];
 };
 
 // `grid`: the full grid's frequencies and Gamma values (its verdicts are not used).

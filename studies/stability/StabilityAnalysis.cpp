@@ -174,6 +174,26 @@ void writeLaw(h5::File& f, const std::string& grp, const std::vector<LayerVerdic
   writeWithinCycle(f, grp, verdicts);
 }
 
+// Per difference: the count per frequency on the grid and the median and 95 % interval over
+// the resamples.
+void writeDifferenceCounts(h5::File& f, const std::string& group,
+                           const std::vector<DifferenceCounts>& counts) {
+  f.createGroup(group);
+  for (const DifferenceCounts& c : counts) {
+    const std::string g = group + "/" + differenceKey(c.difference);
+    f.createGroup(g);
+    f.writeAttribute<std::int64_t>(g, "resamples",
+                                   c.resampled.empty() ? 0 : c.resampled.front().resamples);
+    std::vector<double> median, low, high;
+    for (const PercentileInterval& p : c.resampled)
+      median.push_back(p.median), low.push_back(p.low), high.push_back(p.high);
+    putSeries(f, g + "/grid", c.grid, "1");
+    putSeries(f, g + "/median", median, "1");
+    putSeries(f, g + "/low95", low, "1");
+    putSeries(f, g + "/high95", high, "1");
+  }
+}
+
 }  // namespace
 
 StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) {
@@ -181,6 +201,7 @@ StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) 
   SeedPatterns seeds;
   r.grid = verdicts(c, runs, seeds);
   r.bootstrap = bootstrapOverSeeds(r.grid, seeds);
+  r.difference_counts = bootstrapDifferenceCounts(r.grid, seeds);
   for (int law = 0; law < kLaws; ++law)
     for (double fr : c.frequencies)
       for (double gamma : c.gammas) {
@@ -218,14 +239,7 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   f.writeAttribute<std::int64_t>(boot, "resamples", r.bootstrap.resamples);
   for (const auto& [key, share] : r.bootstrap.verdict_agreement)
     f.writeAttribute<double>(boot, key, share);
-  for (SolidCriterion sc : kSolidCriteria) {
-    const int k = static_cast<int>(sc);
-    if (r.bootstrap.differences_mean[k].empty()) continue;
-    putSeries(f, boot + "/differences_per_frequency_mean" + criterionKey(sc),
-              r.bootstrap.differences_mean[k], "1");
-    putSeries(f, boot + "/differences_per_frequency_std" + criterionKey(sc),
-              r.bootstrap.differences_std[k], "1");
-  }
+  writeDifferenceCounts(f, kRoot + "/difference_bootstrap", r.difference_counts);
 }
 
 }  // namespace granwave

@@ -9,6 +9,7 @@
 #include "h5/File.hpp"
 #include "studies/framework/Study.hpp"
 #include "studies/run_files/RunOutputs.hpp"
+#include "studies/stability/DifferenceBootstrap.hpp"
 #include "studies/stability/SeedBootstrap.hpp"
 #include "studies/stability/StabilityFeatures.hpp"
 #include "studies/stability/StabilityGrid.hpp"
@@ -44,8 +45,9 @@ struct StabilityResults {
   std::vector<double> symbol_differences, period_differences;  // per frequency
   std::vector<double> symbol_differences_within_cycle;         // state by the second criterion
   std::vector<FeatureCheck> features;
-  SeedBootstrap bootstrap;               // how the verdicts depend on the choice of seeds
-  std::vector<GallerySnapshot> gallery;  // by state, then law, f, Gamma
+  SeedBootstrap bootstrap;  // how the verdicts depend on the choice of seeds
+  std::vector<DifferenceCounts> difference_counts;  // the counts per f over seed resamples
+  std::vector<GallerySnapshot> gallery;             // by state, then law, f, Gamma
 };
 
 StabilityResults analyseStability(const StabilityConfig& config, const RunSet& runs);

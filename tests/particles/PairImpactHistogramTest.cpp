@@ -18,9 +18,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 #include "EngineTestSupport.hpp"
+#include "h5/H5Error.hpp"
+#include "particles/H5mdWriter.hpp"
 #include "particles/PairImpactHistogram.hpp"
+#include "tests/h5/ScratchDir.hpp"
 
 using namespace granwave;
 
@@ -80,4 +84,86 @@ TEST(PairImpactHistogram, ImpactsAreBinnedByPhaseSpeedAndHeight) {
   EXPECT_EQ(h.count(3, 9), 1u);
   EXPECT_DOUBLE_EQ(h.weightedMean([](double v) { return v; }, {false, true, false, false}), 0.35);
   EXPECT_THROW(PairImpactHistogram(PairImpactBins{0.0}), std::invalid_argument);
+}
+
+namespace {
+
+PairImpactBins phaseResolvedBins() {
+  PairImpactBins b;
+  b.speed_max = 2.0;
+  b.speed_bins = 40;
+  b.period = 0.2;
+  b.phase_bins = 20;
+  b.start_time = 0.3;
+  b.end_time = 9.0;
+  return b;
+}
+
+// Impacts [first, last) of one fixed pseudo-random sequence.
+void feed(PairImpactHistogram& h, int first, int last) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < last; ++i) {
+    const PairImpact im{10 * u(rng), 2.5 * u(rng), 0.01 * u(rng), u(rng) < 0.3};
+    if (i >= first) h.pairImpact(im);
+  }
+}
+
+}  // namespace
+
+TEST(PairImpactHistogram, RestoredFromACheckpointItEndsAsAnUninterruptedOne) {
+  granwave::testing::ScratchDir dir;
+  PairImpactHistogram whole(phaseResolvedBins()), first(phaseResolvedBins());
+  feed(whole, 0, 5000);
+  feed(first, 0, 2000);
+  {
+    h5::File f = h5::File::create(dir.file("checkpoint.h5"));
+    first.saveState(f, "/observers/pair_impacts");
+  }
+  PairImpactBins later = phaseResolvedBins();
+  later.start_time = 1e300;  // a restarted run does not know the layer's steady start yet
+  PairImpactHistogram resumed(later);
+  resumed.restoreState(h5::File::openReadOnly(dir.file("checkpoint.h5")),
+                       "/observers/pair_impacts");
+  feed(resumed, 2000, 5000);
+  EXPECT_GT(whole.total(), 1000u);
+  EXPECT_EQ(resumed.total(), whole.total());
+  EXPECT_EQ(resumed.counts(), whole.counts());
+  EXPECT_EQ(resumed.bins().start_time, whole.bins().start_time);
+
+  PairImpactBins other = phaseResolvedBins();
+  other.speed_bins = 41;
+  PairImpactHistogram wrong(other);
+  EXPECT_THROW(wrong.restoreState(h5::File::openReadOnly(dir.file("checkpoint.h5")),
+                                  "/observers/pair_impacts"),
+               h5::H5Error);
+}
+
+TEST(PairImpactHistogram, RunFileKeepsTheHistogramAndItsBins) {
+  granwave::testing::ScratchDir dir;
+  PairImpactHistogram h(phaseResolvedBins());
+  feed(h, 0, 3000);
+  H5mdWriter writer(dir.file("run.h5"), "# scene\n", RunProvenance{"test", "", 1, "tester"},
+                    BoxInfo{0.1, 0.1, 0.002, true, false}, 1);
+  writer.writePairImpacts(h);
+  EXPECT_THROW(writer.writePairImpacts(h), std::logic_error);
+  writer.finish(true);
+  const PairImpactHistogram back =
+      PairImpactHistogram::read(h5::File::openReadOnly(dir.file("run.h5")), h5md::kPairImpacts);
+  EXPECT_EQ(back.counts(), h.counts());
+  EXPECT_EQ(back.total(), h.total());
+  EXPECT_EQ(back.bins().phase_bins, 20);
+  EXPECT_EQ(back.bins().speed_bins, 40);
+  EXPECT_EQ(back.bins().period, 0.2);
+  EXPECT_EQ(back.bins().start_time, 0.3);
+  EXPECT_EQ(back.bins().end_time, 9.0);
+  EXPECT_THROW(PairImpactHistogram::read(h5::File::openReadOnly(dir.file("run.h5")), "/nothing"),
+               h5::H5Error);
+}
+
+TEST(PairImpactHistogram, ImpactsAfterEndTimeAreNotCounted) {
+  PairImpactHistogram h(phaseResolvedBins());
+  h.pairImpact({8.99, 0.5, 0.0, false});
+  h.pairImpact({9.0, 0.5, 0.0, false});
+  EXPECT_EQ(h.total(), 1u);
 }

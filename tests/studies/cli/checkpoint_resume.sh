@@ -1,8 +1,8 @@
 #!/bin/sh
 # A particle run killed with SIGKILL and run again with the same command continues from its
 # last checkpoint and ends bit-identical to the same command never stopped: the run file
-# (trajectories, observables, scene, provenance) and the fields file. Checkpointing itself
-# changes nothing but the command line recorded in the provenance. Also: a checkpoint of
+# (trajectories, observables, the pair-impact histogram, scene, provenance) and the fields
+# file. Checkpointing itself changes nothing but the command line recorded in the provenance. Also: a checkpoint of
 # another scene is refused by name, a damaged one too (exit 75, kept), and nothing is left
 # behind.
 # Usage: checkpoint_resume.sh GRANWAVE SCENE.toml WORKDIR
@@ -22,6 +22,9 @@ run() { "$granwave" simulate "$scene" --set run.duration=6 -o run.h5 --fields ru
 (cd "$work/whole" && run --checkpoint-every 0.2 > summary.txt)
 "$identical" "$work/plain/run.h5" "$work/whole/run.h5" --exclude /parameters/provenance ||
   fail "checkpoints changed the run"
+# The pair-impact histogram is in the run file, so the comparisons below cover it too.
+impacts=$(h5dump -a /granwave/pair_impacts/total "$work/whole/run.h5" | sed -n 's/^ *(0): *//p')
+[ "${impacts:-0}" -gt 0 ] || fail "no pair impacts recorded in run.h5"
 
 cd "$work/killed"
 # Not through run(): $! must be granwave itself, not a subshell.

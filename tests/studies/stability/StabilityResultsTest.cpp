@@ -6,8 +6,13 @@
 // amorphous, never liquid-like (the paper's argument for the crystals at high f, Huang,
 // Sec. III: the amplitude falls as f^-2 and becomes small against d). Checked at every grid
 // point with A < d/2, dry and wet, on the most frequent verdict of the seeds.
+// The dry-wet difference counts per frequency are counts of Gamma points: between 0 and the
+// number of Gamma values, on the grid and over the seed resamples (median inside its 95 %
+// interval); a difference in any symbol counts each point once, so the count of "any" lies
+// between the largest and the sum of the counts by symbol, and equals the stored count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -41,6 +46,33 @@ TEST_F(StabilityResults, LayersOnAPlateMovingLessThanHalfADiameterStayCaged) {
     }
   }
   EXPECT_GE(checked, 4) << "too few points with A < d/2 classified";
+}
+
+TEST_F(StabilityResults, DifferenceCountsByCategoryAreCountsOfGammaPointsWithIntervals) {
+  const double gammas = static_cast<double>(study().series(kRoot + "/gammas").size());
+  const std::string g = kRoot + "/difference_bootstrap/";
+  for (const char* key : {"state", "state_within_cycle", "waves", "kinks", "any"}) {
+    const auto grid = study().series(g + key + "/grid");
+    const auto median = study().series(g + key + "/median");
+    const auto low = study().series(g + key + "/low95"), high = study().series(g + key + "/high95");
+    ASSERT_EQ(grid.size(), 2u) << key;
+    for (std::size_t i = 0; i < grid.size(); ++i) {
+      EXPECT_GE(grid[i], 0) << key;
+      EXPECT_LE(grid[i], gammas) << key;
+      EXPECT_LE(low[i], median[i]) << key;
+      EXPECT_LE(median[i], high[i]) << key;
+      EXPECT_GE(low[i], 0) << key;
+      EXPECT_LE(high[i], gammas) << key;
+    }
+  }
+  const auto any = study().series(g + "any/grid");
+  const auto state = study().series(g + "state/grid"), waves = study().series(g + "waves/grid");
+  const auto kinks = study().series(g + "kinks/grid");
+  EXPECT_EQ(any, study().series(kRoot + "/differences_per_frequency"));
+  for (std::size_t i = 0; i < any.size(); ++i) {
+    EXPECT_GE(any[i], std::max({state[i], waves[i], kinks[i]}));
+    EXPECT_LE(any[i], state[i] + waves[i] + kinks[i]);
+  }
 }
 
 }  // namespace
