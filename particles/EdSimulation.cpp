@@ -151,7 +151,6 @@ void EdSimulation::setUp(int n) {
   bottom_curvature_ = cfg_.gravity + aw2;
   lid_curvature_ = std::max(0.0, aw2 - cfg_.gravity);
   pair_curvature_ = cfg_.gravity + aw2;
-  ride_curvature_ = aw2;
 }
 
 void EdSimulation::advance(int i, double t) {

@@ -10,6 +10,7 @@
 // particles are advanced lazily. Recording extrapolates all particles to the recording time
 // without changing the state. Cost per event O(1) on average (the calendar queue; O(log N)
 // at worst, for many equal times), memory O(N).
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <functional>
@@ -119,6 +120,9 @@ class EdSimulation {
   // Schedules i's earliest event from its earliest pair event and its own crossings and walls.
   void schedule(int i, const ParticleState& s, const Event& pair);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;
+  // First time >= now_ at which a rider's height minus its offset, z_b(t), passes u rising
+  // (or falling); +inf if never.
+  double riderCrossingTime(double u, bool rising) const;
   void predictWalls(int i, const ParticleState& s, Event& best, double horizon) const;
   void predictBottomAndLid(const ParticleState& s, Event& best, double horizon) const;
   // Pairs of i with the particles of the m stencil cells nb (earliest into best).
@@ -136,7 +140,23 @@ class EdSimulation {
   void startRiding(int i, WallId wall);
   // Approach speed below which a pair's approach is round-off (see PairCollisionTime).
   double approachTolerance(double speed_a, double speed_b) const;
-  bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
+  // Acceleration (m/s^2) with which a rider presses a flyer along n (rider -> flyer); <= 0
+  // when it does not (then there is no resting contact between them).
+  double riderPress(const ParticleState& rider, const ParticleState& other, Vec2 n) const;
+  bool riderPresses(const ParticleState& rider, const ParticleState& other, Vec2 n) const {
+    return riderPress(rider, other, n) > 0.0;
+  }
+  // Largest separation speed of a resting contact pressed with acceleration `press` (normal
+  // component, m/s^2): rest_velocity, or with the TC model on the speed at which the particle
+  // would come back within t_c, press t_c / 2 (docs/physics.md, "Resting contacts").
+  double restSpeed(double press) const {
+    return std::max(cfg_.rest_velocity, 0.5 * press * cfg_.tc);
+  }
+  // The pressing acceleration of a wall (bottom or lid) at now_ (<= 0: it does not push).
+  double wallPress(WallId wall) const {
+    const double excess = plateAt(now_).acceleration + cfg_.gravity;
+    return wall == kBottom ? excess : wall == kLid ? -excess : 0.0;
+  }
   bool attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i);
   // Without friction a flyer moving horizontally into its rider (rx = flyer - rider
   // horizontally, dvx = flyer - rider velocity) cannot rest on it: attachToRider refuses, so
@@ -144,7 +164,7 @@ class EdSimulation {
   bool slidesIntoSupport(double rx, double dvx) const {
     return cfg_.tangential.friction <= 0.0 && rx * dvx < 0.0;
   }
-  void settleRiders(int i, int j, Vec2 n, Vec2 r, bool pressed, double separation);
+  void settleRiders(int i, int j, Vec2 n, Vec2 r, double press, double separation);
   bool pinched(int i, Vec2 away, Motion rigid, int exclude) const;
   void noteCollision(int i, int partner);
   // Books a restitution-law pair impact at normal speed v_n (Observables::pair_impact_*).
@@ -187,7 +207,7 @@ class EdSimulation {
   PairImpactObserver* impact_observer_ = nullptr;
   Observables obs_;
   double now_ = 0;
-  double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0, ride_curvature_ = 0;
+  double bottom_curvature_ = 0, lid_curvature_ = 0, pair_curvature_ = 0;
   std::uint64_t records_ = 0;
   double next_record_ = 0;
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)

@@ -93,12 +93,12 @@ double EdSimulation::approachTolerance(double speed_a, double speed_b) const {
   return kApproachTolerance * (speed_a + speed_b + std::sqrt(cfg_.gravity * cfg_.diameter));
 }
 
-bool EdSimulation::riderPresses(const ParticleState& rider, const ParticleState& other,
+double EdSimulation::riderPress(const ParticleState& rider, const ParticleState& other,
                                 Vec2 n_rider_to_other) const {
   // Relative acceleration of a flying particle with respect to a rider is
   // (0, -g - z_b''); the contact is compressed if it points against n (rider -> other).
-  if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return false;
-  return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z > 0.0;
+  if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return 0.0;
+  return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z;
 }
 
 bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
@@ -175,12 +175,14 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   const double vn = pairNormalSpeed(n, va, vb);
   // Which partner (if any) is a rider pressing the other: resting contacts attach.
   const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
-  const bool pressed =
-      (a_rides && riderPresses(a, b, {-n.x, -n.z})) || (b_rides && riderPresses(b, a, n));
+  const double press = a_rides   ? riderPress(a, b, {-n.x, -n.z})
+                       : b_rides ? riderPress(b, a, n)
+                                 : 0.0;
+  const bool pressed = press > 0.0;
   const double tol =
       approachTolerance(std::sqrt(a.vx * a.vx + a.vz * a.vz), std::sqrt(b.vx * b.vx + b.vz * b.vz));
   if (!(vn > tol)) {
-    if (pressed && -vn <= cfg_.rest_velocity &&
+    if (pressed && -vn <= restSpeed(press) &&
         (a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz}))) {
       ++a.counter;
       ++b.counter;
@@ -209,7 +211,7 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
   noteCollision(i, j);
   noteCollision(j, i);
-  if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, pressed, -pairNormalSpeed(n, c.v1, c.v2));
+  if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, press, -pairNormalSpeed(n, c.v1, c.v2));
   predict(i);
   predict(j);
 }
@@ -217,13 +219,14 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
 // After an impact involving a rider (i's partner j; n from j to i, r = x_i - x_j): the other
 // particle comes to rest on a pressing rider or is pinched against it and joins the rigid layer;
 // otherwise a rider given a vertical impulse leaves its wall.
-void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, bool pressed, double separation) {
+void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, double separation) {
+  const bool pressed = press > 0.0;
   ParticleState& a = p_[i];
   ParticleState& b = p_[j];
   const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
   const double rx = r.x, rz = r.z;
   bool attached = false;
-  if (pressed && separation <= cfg_.rest_velocity) {
+  if (pressed && separation <= restSpeed(press)) {
     // Came to rest on a pressing rider: the rider's support takes the impulse, the other
     // particle joins the rigid layer on the wall.
     ParticleState& rider = a_rides ? a : b;
@@ -295,7 +298,7 @@ void EdSimulation::doWall(int i, WallId wall) {
   }
   const double approach = -((s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z);  // > 0 approaching
   const bool pushes = wallPushes(wall, now_);
-  const bool resting = std::abs(approach) <= cfg_.rest_velocity && pushes;
+  const bool resting = pushes && std::abs(approach) <= restSpeed(wallPress(wall));
   if (approach <= 0.0 && !resting) {  // separating: the event was a grazing near-miss
     predict(i);
     return;
@@ -333,7 +336,7 @@ void EdSimulation::doWall(int i, WallId wall) {
   const double separation = (s.vx - vw.x) * n.x + (s.vz - vw.z) * n.z;
   const Motion rigid = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
   if ((wall == kBottom || wall == kLid) && pushes &&
-      (separation <= cfg_.rest_velocity || pinched(i, n, rigid, -1))) {
+      (separation <= restSpeed(wallPress(wall)) || pinched(i, n, rigid, -1))) {
     startRiding(i, wall);
   } else if (s.motion != Motion::Ballistic && (s.vz != plateAt(now_).velocity)) {
     s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity

@@ -89,23 +89,30 @@ void EdSimulation::predictCrossing(int i, const ParticleState& s, Event& best) c
                kCrossZMinus);
     return;
   }
-  // Riding: the height is the wall's, z(t) = z_b(t) + const; its curvature is bounded by
-  // A omega^2, so the gap root finder gives the exact crossing.
-  const double offset = s.ride_offset;
-  const PlateMotion& plate = cfg_.plate;
-  if (up_open) {
-    const double zhi = zlo + g.wz;
-    auto gap = [&](double t) {
-      return GapRate{zhi - plate.height(t) - offset, -plate.velocity(t)};
-    };
-    consider(best, firstClosingRoot(gap, ride_curvature_, now_, best.time), EventKind::CellCross,
+  // Riding: the height is the wall's, z(t) = A sin(w t) + offset, so a boundary z_c is
+  // crossed where sin(w t) passes (z_c - offset) / A: rising at the phase asin of it,
+  // falling at pi minus that, once a cycle, and never if |z_c - offset| >= A. (A bounded-
+  // curvature root search here ran to its step limit, a sine and cosine a step, for every
+  // rider that never crosses: the whole cost of a resting layer on a gently shaken plate.)
+  if (up_open)
+    consider(best, riderCrossingTime(zlo + g.wz - s.ride_offset, true), EventKind::CellCross,
              kCrossZPlus);
-  }
-  if (down_open) {
-    auto gap = [&](double t) { return GapRate{plate.height(t) + offset - zlo, plate.velocity(t)}; };
-    consider(best, firstClosingRoot(gap, ride_curvature_, now_, best.time), EventKind::CellCross,
+  if (down_open)
+    consider(best, riderCrossingTime(zlo - s.ride_offset, false), EventKind::CellCross,
              kCrossZMinus);
-  }
+}
+
+double EdSimulation::riderCrossingTime(double u, bool rising) const {
+  const PlateMotion& plate = cfg_.plate;
+  if (!(plate.omega > 0.0) || !(std::abs(u) < plate.amplitude))
+    return std::numeric_limits<double>::infinity();
+  const double two_pi = 2.0 * std::numbers::pi;
+  const double a = std::asin(u / plate.amplitude);
+  const double phase = rising ? a : std::numbers::pi - a;
+  const double k = std::ceil((plate.omega * now_ - phase) / two_pi);
+  double t = (phase + k * two_pi) / plate.omega;
+  if (t < now_) t = (phase + (k + 1) * two_pi) / plate.omega;
+  return t;
 }
 
 void EdSimulation::predictWalls(int i, const ParticleState& s, Event& best, double horizon) const {
@@ -170,7 +177,8 @@ void EdSimulation::predictBottomAndLid(const ParticleState& s, Event& best, doub
                      s.vz - g * tau - plate.velocity(t)};
     };
     const GapRate h0{s.z - r - zb0, s.vz - vb0};
-    if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kBottom, t0)) {
+    if (h0.h <= tol && wallPushes(kBottom, t0) &&
+        std::abs(h0.rate) <= restSpeed(wallPress(kBottom))) {
       consider(best, t0, EventKind::Wall, kBottom);  // resting contact: starts riding
     } else {
       consider(best, firstClosingRoot(gap, bottom_curvature_, t0, horizon, {tol}, h0),
@@ -185,7 +193,7 @@ void EdSimulation::predictBottomAndLid(const ParticleState& s, Event& best, doub
                      plate.velocity(t) - s.vz + g * tau};
     };
     const GapRate h0{zb0 + cfg_.height - r - s.z, vb0 - s.vz};
-    if (h0.h <= tol && std::abs(h0.rate) <= cfg_.rest_velocity && wallPushes(kLid, t0)) {
+    if (h0.h <= tol && wallPushes(kLid, t0) && std::abs(h0.rate) <= restSpeed(wallPress(kLid))) {
       consider(best, t0, EventKind::Wall, kLid);
     } else {
       consider(best, firstClosingRoot(gap, lid_curvature_, t0, horizon, {tol}, h0), EventKind::Wall,
@@ -242,10 +250,10 @@ void EdSimulation::predictPairWith(int i, const ParticleState& s, double speed_i
     ParticleState o = q;
     o.z = oz;
     const Vec2 n{rx / dist, rz / dist};  // from j to i
-    const bool presses =
-        s.motion == Motion::Ballistic ? riderPresses(o, s, n) : riderPresses(s, o, {-n.x, -n.z});
+    const double press =
+        s.motion == Motion::Ballistic ? riderPress(o, s, n) : riderPress(s, o, {-n.x, -n.z});
     // rx * vx is the same whichever of the two is the flyer.
-    if (std::abs(rate) <= cfg_.rest_velocity && presses && !slidesIntoSupport(rx, vx)) {
+    if (press > 0.0 && std::abs(rate) <= restSpeed(press) && !slidesIntoSupport(rx, vx)) {
       if (now_ < best.time) best = {now_, EventKind::Pair, j, q.counter};
       return;
     }
