@@ -4,20 +4,6 @@ namespace granwave {
 
 namespace {
 
-// The verdict of one law at point p from the seeds `draw`.
-LayerVerdict revotePoint(const SeedPatterns& s, int law, std::size_t p,
-                         const std::vector<std::size_t>& draw) {
-  std::vector<LayerPatterns> patterns;
-  std::vector<bool> finished;
-  std::vector<std::string> messages;
-  for (std::size_t k : draw) {
-    patterns.push_back(s.patterns[law][p][k]);
-    finished.push_back(s.finished[law][p][k]);
-    messages.push_back(s.messages[law][p][k]);
-  }
-  return voteOverSeeds(patterns, finished, messages);
-}
-
 // The grid voted again, point p from the seeds draws[first + p].
 StabilityGrid revote(const StabilityGrid& frame, const SeedPatterns& s,
                      const std::vector<std::vector<std::size_t>>& draws, std::size_t first) {

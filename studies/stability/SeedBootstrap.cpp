@@ -6,6 +6,19 @@
 
 namespace granwave {
 
+LayerVerdict revotePoint(const SeedPatterns& s, int law, std::size_t p,
+                         const std::vector<std::size_t>& draw) {
+  std::vector<LayerPatterns> patterns;
+  std::vector<bool> finished;
+  std::vector<std::string> messages;
+  for (std::size_t k : draw) {
+    patterns.push_back(s.patterns[law][p][k]);
+    finished.push_back(s.finished[law][p][k]);
+    messages.push_back(s.messages[law][p][k]);
+  }
+  return voteOverSeeds(patterns, finished, messages);
+}
+
 namespace {
 
 // The grid voted again from the seeds `draw` (indices into each point's seeds).
@@ -16,15 +29,7 @@ StabilityGrid revote(const StabilityGrid& grid, const SeedPatterns& s,
   g.gammas = grid.gammas;
   for (int law = 0; law < 2; ++law)
     for (std::size_t p = 0; p < s.patterns[law].size(); ++p) {
-      std::vector<LayerPatterns> patterns;
-      std::vector<bool> finished;
-      std::vector<std::string> messages;
-      for (std::size_t k : draw) {
-        patterns.push_back(s.patterns[law][p][k]);
-        finished.push_back(s.finished[law][p][k]);
-        messages.push_back(s.messages[law][p][k]);
-      }
-      g.verdicts[law].push_back(voteOverSeeds(patterns, finished, messages));
+      g.verdicts[law].push_back(revotePoint(s, law, p, draw));
     }
   return g;
 }

@@ -29,6 +29,11 @@ struct SeedPatterns {
   std::vector<std::vector<std::string>> messages[2];
 };
 
+// The verdict of one law at point p voted again by the seeds `draw` (indices into the point's
+// seeds, repeats allowed): the step every bootstrap over seeds repeats.
+LayerVerdict revotePoint(const SeedPatterns& s, int law, std::size_t p,
+                         const std::vector<std::size_t>& draw);
+
 // The share of resamples from which a verdict counts as decided (the wave-fronts study's
 // [verdicts] agreement default; docs/studies.md, "Verdict stability").
 inline constexpr double kDecidedAgreement = 0.9;
