@@ -1,7 +1,6 @@
 #include "studies/stability/SeedBootstrap.hpp"
 
-#include <random>
-
+#include "studies/framework/SeedResampling.hpp"
 #include "studies/stability/StabilityFeatures.hpp"
 
 namespace granwave {
@@ -48,10 +47,7 @@ SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& 
   for (const FeatureCheck& c : checkPaperFeatures(revote(grid, s, all)))
     reference[c.key] = c.verdict;
 
-  std::mt19937_64 rng(20150415);
-  for (int r = 0; r < resamples; ++r) {
-    std::vector<std::size_t> draw(seeds);
-    for (std::size_t& k : draw) k = static_cast<std::size_t>(rng() % seeds);
+  for (const auto& draw : seedDraws(seeds, resamples, 20150415)) {
     const StabilityGrid g = revote(grid, s, draw);
     for (const FeatureCheck& c : checkPaperFeatures(g))
       b.verdict_agreement[c.key] += c.verdict == reference[c.key] ? 1.0 : 0.0;

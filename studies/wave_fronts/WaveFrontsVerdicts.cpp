@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 
 #include "coarse_grain/PeriodDoublingSeries.hpp"
+#include "studies/framework/SeedResampling.hpp"
 #include "studies/framework/StudyResults.hpp"
 #include "studies/framework/WaveMomentumRatio.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
@@ -35,13 +35,10 @@ VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInp
   v.verdict = verdict(all);
   v.seeds = n;
   v.resamples = c.resamples;
-  // A fixed 64-bit Mersenne Twister sequence, index = draw mod seeds: the same resamples on
-  // every build (std::uniform_int_distribution is not specified bit for bit).
-  std::mt19937_64 rng(20261202);
+  // The same resamples on every build (SeedResampling.hpp).
   int same = 0;
-  for (int b = 0; b < c.resamples; ++b) {
-    std::vector<int> pick;
-    for (int i = 0; i < n; ++i) pick.push_back(static_cast<int>(rng() % static_cast<unsigned>(n)));
+  for (const auto& draw : seedDraws(static_cast<std::size_t>(n), c.resamples, 20261202)) {
+    const std::vector<int> pick(draw.begin(), draw.end());
     const std::string s = verdict(pick);
     v.shares[s] += 1.0 / c.resamples;
     same += s == v.verdict;
