@@ -18,40 +18,46 @@ LayerVerdict revotePoint(const SeedPatterns& s, int law, std::size_t p,
   return voteOverSeeds(patterns, finished, messages);
 }
 
-namespace {
-
-// The grid voted again from the seeds `draw` (indices into each point's seeds).
-StabilityGrid revote(const StabilityGrid& grid, const SeedPatterns& s,
-                     const std::vector<std::size_t>& draw) {
-  StabilityGrid g;
-  g.frequencies = grid.frequencies;
-  g.gammas = grid.gammas;
-  for (int law = 0; law < 2; ++law)
-    for (std::size_t p = 0; p < s.patterns[law].size(); ++p) {
-      g.verdicts[law].push_back(revotePoint(s, law, p, draw));
-    }
-  return g;
+PointDraws pointDraws(const SeedPatterns& s, int resamples, std::uint64_t rng_seed) {
+  PointDraws out;
+  for (std::size_t p = 0; p < s.patterns[0].size(); ++p)
+    out.push_back(seedDraws(s.patterns[0][p].size(), resamples, rng_seed + p));
+  return out;
 }
 
-}  // namespace
+PointDraws allSeeds(const SeedPatterns& s) {
+  PointDraws out;
+  for (const auto& point : s.patterns[0]) {
+    std::vector<std::size_t> all(point.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+    out.push_back({all});
+  }
+  return out;
+}
+
+StabilityGrid revoteGrid(const StabilityGrid& frame, const SeedPatterns& s, const PointDraws& draws,
+                         std::size_t r) {
+  StabilityGrid g;
+  g.frequencies = frame.frequencies;
+  g.gammas = frame.gammas;
+  for (int law = 0; law < 2; ++law)
+    for (std::size_t p = 0; p < s.patterns[law].size(); ++p)
+      g.verdicts[law].push_back(revotePoint(s, law, p, draws[p][r]));
+  return g;
+}
 
 SeedBootstrap bootstrapOverSeeds(const StabilityGrid& grid, const SeedPatterns& s, int resamples) {
   SeedBootstrap b;
   b.resamples = resamples;
-  const std::size_t seeds =
-      s.patterns[0].empty() || s.patterns[0].front().empty() ? 0 : s.patterns[0].front().size();
-  if (seeds == 0 || resamples <= 0) return b;
-  std::vector<std::size_t> all(seeds);
-  for (std::size_t k = 0; k < seeds; ++k) all[k] = k;
+  if (s.patterns[0].empty() || s.patterns[0].size() != s.patterns[1].size() || resamples <= 0)
+    return b;
   std::map<std::string, std::string> reference;
-  for (const FeatureCheck& c : checkPaperFeatures(revote(grid, s, all)))
+  for (const FeatureCheck& c : checkPaperFeatures(revoteGrid(grid, s, allSeeds(s), 0)))
     reference[c.key] = c.verdict;
-
-  for (const auto& draw : seedDraws(seeds, resamples, 20150415)) {
-    const StabilityGrid g = revote(grid, s, draw);
-    for (const FeatureCheck& c : checkPaperFeatures(g))
+  const PointDraws draws = pointDraws(s, resamples, 20150415);
+  for (std::size_t r = 0; r < static_cast<std::size_t>(resamples); ++r)
+    for (const FeatureCheck& c : checkPaperFeatures(revoteGrid(grid, s, draws, r)))
       b.verdict_agreement[c.key] += c.verdict == reference[c.key] ? 1.0 : 0.0;
-  }
   for (const auto& [key, verdict] : reference) b.verdict_agreement.try_emplace(key, 0.0);
   for (auto& [key, agreeing] : b.verdict_agreement) agreeing /= resamples;
   return b;

@@ -4,14 +4,15 @@
 //
 // The verdict at a point is the most frequent over its seeds (SeedVote.hpp), and the paper's
 // features and the dry-wet difference counts are read from those verdicts. Each resample
-// draws as many seeds as the study ran, with replacement, from the seeds it ran (the same
-// draw at every point and for both laws, as a seed is one whole sweep), votes again, and
-// checks the features again. Reported: for each feature, the share of resamples whose
-// verdict equals the full grid's (1: no seed choice changes it; near 1/2: a coin flip). With
-// one seed every resample is the grid itself. (The dry-wet difference counts have their own
-// bootstrap, DifferenceBootstrap.hpp.)
-// The draw is a fixed 64-bit Mersenne Twister sequence (index = draw mod seeds), so the
-// bootstrap is the same on every build.
+// draws, independently at every (f, Gamma) point (the runs of different points are independent
+// simulations), as many seeds as were run there, with replacement, and the same draw for the
+// dry and the wet layer of the point; the seeds vote again and the features are checked again.
+// Reported: for each feature, the share of resamples whose verdict equals the full grid's (1:
+// no seed choice changes it; near 1/2: a coin flip). A point whose seeds all agree is the same
+// in every resample. (The dry-wet difference counts have their own bootstrap,
+// DifferenceBootstrap.hpp.) The draws are fixed 64-bit Mersenne Twister sequences, one per
+// point (SeedResampling.hpp), so the bootstrap is the same on every build.
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -33,6 +34,17 @@ struct SeedPatterns {
 // seeds, repeats allowed): the step every bootstrap over seeds repeats.
 LayerVerdict revotePoint(const SeedPatterns& s, int law, std::size_t p,
                          const std::vector<std::size_t>& draw);
+
+// Draws of seeds for every resample: [point][resample] -> indices into the point's seeds.
+using PointDraws = std::vector<std::vector<std::vector<std::size_t>>>;
+// `resamples` independent draws at every point, each of as many seeds as the point ran;
+// point p's come from the sequence seeded rng_seed + p.
+PointDraws pointDraws(const SeedPatterns& s, int resamples, std::uint64_t rng_seed);
+// Every point's seeds once each: the full grid as one "resample".
+PointDraws allSeeds(const SeedPatterns& s);
+// The grid voted again from resample r of `draws`; `frame` gives frequencies and Gamma values.
+StabilityGrid revoteGrid(const StabilityGrid& frame, const SeedPatterns& s, const PointDraws& draws,
+                         std::size_t r);
 
 // The share of resamples from which a verdict counts as decided (the wave-fronts study's
 // [verdicts] agreement default; docs/studies.md, "Verdict stability").

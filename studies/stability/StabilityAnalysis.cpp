@@ -11,11 +11,14 @@
 
 namespace granwave {
 
-namespace {
+std::vector<int> seedsAt(const StabilityConfig& c, const RunSet& runs, double fr, double gamma) {
+  std::vector<int> seeds = c.seeds;
+  for (int sd : c.extraSeeds())
+    if (runs.has(StabilityConfig::particleRun(0, fr, gamma, sd))) seeds.push_back(sd);
+  return seeds;
+}
 
-const std::string kRoot = "/results/stability";
-
-StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs, SeedPatterns& seeds) {
+StabilityGrid voteGrid(const StabilityConfig& c, const RunSet& runs, SeedPatterns& seeds) {
   StabilityGrid grid;
   grid.frequencies = c.frequencies;
   grid.gammas = c.gammas;
@@ -25,7 +28,7 @@ StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs, SeedPattern
         std::vector<LayerPatterns> patterns;
         std::vector<bool> finished;
         std::vector<std::string> messages;
-        for (int seed : c.seeds) {
+        for (int seed : seedsAt(c, runs, fr, gamma)) {
           const RunRecord& r = runs.get(StabilityConfig::particleRun(law, fr, gamma, seed));
           patterns.push_back(r.ok ? readLayerPatterns(r.fieldsPath()) : LayerPatterns{});
           finished.push_back(r.ok);
@@ -38,6 +41,10 @@ StabilityGrid verdicts(const StabilityConfig& c, const RunSet& runs, SeedPattern
       }
   return grid;
 }
+
+namespace {
+
+const std::string kRoot = "/results/stability";
 
 HydroPoint hydroPoint(const StabilityConfig& c, const RunSet& runs, int law, double fr,
                       double gamma, bool rough) {
@@ -199,8 +206,11 @@ void writeDifferenceCounts(h5::File& f, const std::string& group,
 StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) {
   StabilityResults r;
   SeedPatterns seeds;
-  r.grid = verdicts(c, runs, seeds);
+  r.grid = voteGrid(c, runs, seeds);
   r.bootstrap = bootstrapOverSeeds(r.grid, seeds);
+  for (const auto& point : seeds.patterns[0])
+    r.seeds_per_point.push_back(static_cast<double>(point.size()));
+  r.max_seeds = c.max_seeds;
   r.difference_counts = bootstrapDifferenceCounts(r.grid, seeds);
   for (int law = 0; law < kLaws; ++law)
     for (double fr : c.frequencies)
@@ -223,6 +233,7 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   putSeries(f, kRoot + "/gammas", c.gammas, "1");
   const std::vector<double> seeds(c.seeds.begin(), c.seeds.end());
   putSeries(f, kRoot + "/seeds", seeds, "1");
+  putSeries(f, kRoot + "/seeds_per_point", r.seeds_per_point, "1");
   putSeries(f, kRoot + "/differences_per_frequency", r.symbol_differences, "1");
   putSeries(f, kRoot + "/differences_per_frequency_within_cycle", r.symbol_differences_within_cycle,
             "1");
@@ -237,8 +248,12 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   const std::string boot = kRoot + "/seed_bootstrap";
   f.createGroup(boot);
   f.writeAttribute<std::int64_t>(boot, "resamples", r.bootstrap.resamples);
-  for (const auto& [key, share] : r.bootstrap.verdict_agreement)
+  int undecided = 0;
+  for (const auto& [key, share] : r.bootstrap.verdict_agreement) {
     f.writeAttribute<double>(boot, key, share);
+    undecided += share < kDecidedAgreement;
+  }
+  f.writeAttribute<double>(boot, "undecided", undecided);  // features below the agreement
   writeDifferenceCounts(f, kRoot + "/difference_bootstrap", r.difference_counts);
 }
 

@@ -45,11 +45,17 @@ struct StabilityResults {
   std::vector<double> symbol_differences, period_differences;  // per frequency
   std::vector<double> symbol_differences_within_cycle;         // state by the second criterion
   std::vector<FeatureCheck> features;
-  SeedBootstrap bootstrap;  // how the verdicts depend on the choice of seeds
+  SeedBootstrap bootstrap;              // how the verdicts depend on the choice of seeds
+  std::vector<double> seeds_per_point;  // seeds run at each point (more where they disagreed)
+  int max_seeds = 0;
   std::vector<DifferenceCounts> difference_counts;  // the counts per f over seed resamples
   std::vector<GallerySnapshot> gallery;             // by state, then law, f, Gamma
 };
 
+// The seeds run at a point: the study's, then any added where its seeds disagreed.
+std::vector<int> seedsAt(const StabilityConfig& config, const RunSet& runs, double f, double gamma);
+// Every point voted over its seeds; `seeds` receives every seed's classification.
+StabilityGrid voteGrid(const StabilityConfig& config, const RunSet& runs, SeedPatterns& seeds);
 StabilityResults analyseStability(const StabilityConfig& config, const RunSet& runs);
 void writeStabilityResults(h5::File& file, const StabilityConfig& config,
                            const StabilityResults& results);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <set>
 
 #include "studies/framework/Measurement.hpp"
@@ -26,6 +27,8 @@ void StabilityStudy::readKeys(StudyFile& f) {
   c_.gammas = f.numbers("grid", "gammas", c_.gammas);
   c_.cycles = f.number("particles", "cycles", c_.cycles);
   c_.seeds = f.integers("particles", "seeds", c_.seeds);
+  c_.max_seeds = f.integer("particles", "max_seeds", std::max<int>(c_.max_seeds, c_.seeds.size()));
+  c_.seed_step = f.integer("particles", "seed_step", c_.seed_step);
   c_.window = f.integer("particles", "window_cycles", c_.window);
   c_.blocks = f.integer("particles", "blocks", c_.blocks);
   c_.hydro = f.boolean("hydro", "enabled", c_.hydro);
@@ -43,6 +46,31 @@ void StabilityStudy::readKeys(StudyFile& f) {
   if (std::set<int>(c_.seeds.begin(), c_.seeds.end()).size() != c_.seeds.size())
     f.fail("particles", "seeds", "expected distinct seeds");
   if (!(c_.cycles >= 30)) f.fail("particles", "cycles", "expected at least 30 cycles");
+  if (c_.max_seeds < static_cast<int>(c_.seeds.size()) || c_.max_seeds > 50)
+    f.fail("particles", "max_seeds",
+           fmt::format("expected from the number of seeds ({}) to 50", c_.seeds.size()));
+  if (c_.seed_step < 1) f.fail("particles", "seed_step", "expected a positive integer");
+}
+
+std::vector<int> StabilityConfig::extraSeeds() const {
+  std::vector<int> out;
+  int next = seeds.empty() ? 1 : *std::max_element(seeds.begin(), seeds.end()) + 1;
+  for (std::size_t k = seeds.size(); k < static_cast<std::size_t>(max_seeds); ++k)
+    out.push_back(next++);
+  return out;
+}
+
+RunRequest StabilityStudy::particleRequest(StudyFile& f, int law, double fr, double gamma,
+                                           int seed) const {
+  const std::vector<std::string> o{fmt::format("drive.frequency={}", formatCompact(fr)),
+                                   fmt::format("drive.gamma={}", formatCompact(gamma)),
+                                   fmt::format("run.duration={:.6g}", c_.cycles / fr),
+                                   fmt::format("run.seed={}", seed)};
+  RunRequest q = runRequest(RunKind::Particles, StabilityConfig::particleRun(law, fr, gamma, seed),
+                            c_.scenes.scene(f, law, o));
+  q.window_cycles = c_.window;
+  q.blocks = c_.blocks;
+  return q;
 }
 
 StabilityStudy::StabilityStudy(StudyFile& f) {
@@ -50,25 +78,45 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
   for (int law = 0; law < kLaws; ++law)
     for (double fr : c_.frequencies)
       for (double gamma : c_.gammas) {
-        std::vector<std::string> o{fmt::format("drive.frequency={}", formatCompact(fr)),
-                                   fmt::format("drive.gamma={}", formatCompact(gamma)),
-                                   fmt::format("run.duration={:.6g}", c_.cycles / fr)};
-        for (int seed : c_.seeds) {
-          std::vector<std::string> os = o;
-          os.push_back(fmt::format("run.seed={}", seed));
-          RunRequest q =
-              runRequest(RunKind::Particles, StabilityConfig::particleRun(law, fr, gamma, seed),
-                         c_.scenes.scene(f, law, os));
-          q.window_cycles = c_.window;
-          q.blocks = c_.blocks;
-          requests_.push_back(std::move(q));
-        }
+        for (int seed : c_.seeds) requests_.push_back(particleRequest(f, law, fr, gamma, seed));
         // The continuum has no seed; the scene names the first one only so that it is
         // complete (the seed does not enter the hydro solver).
-        o.push_back(fmt::format("run.seed={}", c_.seeds.front()));
+        const std::vector<std::string> o{fmt::format("drive.frequency={}", formatCompact(fr)),
+                                         fmt::format("drive.gamma={}", formatCompact(gamma)),
+                                         fmt::format("run.duration={:.6g}", c_.cycles / fr),
+                                         fmt::format("run.seed={}", c_.seeds.front())};
         if (c_.hydro) addHydro(f, law, fr, gamma, o, false);
         if (c_.hydro_rough) addHydro(f, law, fr, gamma, o, true);
       }
+  for (double fr : c_.frequencies)
+    for (double gamma : c_.gammas) {
+      std::vector<RunRequest> point;
+      for (int seed : c_.extraSeeds())
+        for (int law = 0; law < kLaws; ++law)
+          point.push_back(particleRequest(f, law, fr, gamma, seed));
+      extra_.push_back(std::move(point));
+    }
+}
+
+// More seeds where they can change a verdict: while a feature is undecided, at every point
+// whose seeds disagree (a point whose seeds agree is the same in every resample), seed_step
+// seeds of both laws, until the point has max_seeds.
+std::vector<RunRequest> StabilityStudy::followUp(const RunSet& runs) const {
+  SeedPatterns seeds;
+  const StabilityGrid grid = voteGrid(c_, runs, seeds);
+  bool undecided = false;
+  for (const auto& [key, agreement] : bootstrapOverSeeds(grid, seeds).verdict_agreement)
+    undecided = undecided || agreement < kDecidedAgreement;
+  std::vector<RunRequest> more;
+  if (!undecided) return more;
+  for (std::size_t p = 0; p < extra_.size(); ++p) {
+    if (grid.verdicts[0][p].seedsAgree() && grid.verdicts[1][p].seedsAgree()) continue;
+    const std::size_t have = seeds.patterns[0][p].size() - c_.seeds.size();
+    const std::size_t to = std::min(extra_[p].size(), 2 * (have + c_.seed_step));
+    more.insert(more.end(), extra_[p].begin() + static_cast<long>(2 * have),
+                extra_[p].begin() + static_cast<long>(to));
+  }
+  return more;
 }
 
 void StabilityStudy::addHydro(StudyFile& f, int law, double fr, double gamma,

@@ -20,11 +20,16 @@ struct StabilityConfig {
   std::vector<double> gammas{2, 3, 4, 5, 6, 7};
   double cycles = 150;
   std::vector<int> seeds{1, 2, 3};
+  // Seeds added, seed_step at a time, at the points whose seeds disagree while a feature's
+  // verdict is undecided, up to max_seeds at a point (docs/studies.md, "Stability over seeds").
+  int max_seeds = 5, seed_step = 2;
   int window = 2, blocks = 5;
   bool hydro = true;
   bool hydro_rough = true;  // also the rough-particle closure (rotational temperature)
   int gallery_per_state = 2;
 
+  // The seeds after `seeds`, up to max_seeds in all: the next integers after the largest.
+  std::vector<int> extraSeeds() const;
   static std::string particleRun(int law, double f, double gamma, int seed);
   static std::string hydroRun(int law, double f, double gamma, bool rough = false);
 };
@@ -36,6 +41,7 @@ class StabilityStudy final : public Study {
     return "Stability diagrams of dry and wet vibrated layers (the paper's Fig. 3)";
   }
   std::vector<RunRequest> plan() const override { return requests_; }
+  std::vector<RunRequest> followUp(const RunSet& runs) const override;
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
  private:
@@ -43,8 +49,12 @@ class StabilityStudy final : public Study {
   // The continuum at one point (one run: it has no seed), smooth disks or rough particles.
   void addHydro(StudyFile& f, int law, double fr, double gamma, std::vector<std::string> o,
                 bool rough);
+  RunRequest particleRequest(StudyFile& f, int law, double fr, double gamma, int seed) const;
   StabilityConfig c_;
   std::vector<RunRequest> requests_;
+  // [point] -> the runs of the extra seeds there, seed by seed (dry, wet), for followUp;
+  // points in the grid's order (f, then Gamma).
+  std::vector<std::vector<RunRequest>> extra_;
 };
 
 std::unique_ptr<Study> makeStabilityStudy(StudyFile& file);

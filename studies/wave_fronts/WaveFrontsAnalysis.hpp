@@ -11,6 +11,7 @@
 #include "h5/File.hpp"
 #include "studies/framework/ImpactFronts.hpp"
 #include "studies/framework/Measurement.hpp"
+#include "studies/framework/StateShare.hpp"
 #include "studies/framework/Study.hpp"
 #include "studies/framework/VelocityFronts.hpp"
 #include "studies/run_files/RunOutputs.hpp"
@@ -100,6 +101,8 @@ struct ModelCandidate {
   std::string failure;
   Measurement speed;
   std::string periods;
+  StateShare share;           // time in the period-2 state (hydro: exact from its period)
+  ShareDifference share_gap;  // share - the reference's, with its 95 % interval
   double sigma = NAN;
   bool reproduces = false, powerless = false;
 };
@@ -121,16 +124,20 @@ struct ModelHierarchy {
   Measurement reference;
   std::string reference_periods;
   int reference_period = 0;
+  StateShare reference_share;
   std::vector<ModelCandidate> candidates;
   std::string simplest;  // empty: none reproduces the particles
   VerdictStability stability;
 };
 
-// One particle run of a model on one seed: its impact fronts and layer period.
+// One particle run of a model on one seed: its impact fronts, layer period and state windows
+// (all, in the period-2 state, effective).
 struct SeedRun {
   bool ok = false;
   ImpactFronts fronts;
   int period = 0;
+  int windows = 0, period2_windows = 0;
+  double effective_windows = 0;
 };
 
 // What the model hierarchy is judged from, read once: per particle model tag ("", "constant

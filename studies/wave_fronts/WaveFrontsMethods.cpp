@@ -17,38 +17,55 @@ namespace {
 
 // A particle model over the picked seeds (indices into inputs.seeds; a seed may be picked more
 // than once by the bootstrap): the combined front speed, the periods of the seeds and their
-// most frequent value (0: none; a tie goes to the smaller period).
-int overSeeds(const ModelInputs& in, const std::string& tag, const std::vector<int>& pick,
-              Measurement& speed, std::string& periods) {
+// most frequent value (0: none; a tie goes to the smaller period), and the share of time in
+// the period-2 state pooled over the seeds' windows.
+struct OverSeeds {
+  Measurement speed;
+  std::string periods;
+  int mode = 0;
+  StateShare share;
+};
+
+OverSeeds overSeeds(const ModelInputs& in, const std::string& tag, const std::vector<int>& pick) {
+  OverSeeds out;
   std::vector<ImpactFronts> fronts;
   std::map<int, int> count;
-  periods.clear();
+  int windows = 0, period2 = 0;
+  double effective = 0;
   for (int i : pick) {
     const SeedRun& r = in.particles.at(tag)[static_cast<std::size_t>(i)];
     if (!r.ok) continue;
     fronts.push_back(r.fronts);
     ++count[r.period];
-    periods += (periods.empty() ? "" : ", ") + std::to_string(r.period);
+    out.periods += (out.periods.empty() ? "" : ", ") + std::to_string(r.period);
+    windows += r.windows;
+    period2 += r.period2_windows;
+    effective += r.effective_windows;
   }
-  speed = combineImpactFronts(fronts).all;
-  int mode = 0, best = 0;
+  out.speed = combineImpactFronts(fronts).all;
+  int best = 0;
   for (auto [period, n] : count)
     if (n > best) {
       best = n;
-      mode = period;
+      out.mode = period;
     }
-  return mode;
+  out.share = pooledStateShare(windows, period2, effective);
+  return out;
 }
 
 // A candidate reproduces the reference if its front speed lies within 2 combined sigma and its
-// period is the reference's most frequent one. A candidate much less precise than the
-// reference passes a 2-sigma test by its own error bar: that says nothing, and is marked.
-void judge(const ModelHierarchy& m, ModelCandidate& c, int period) {
+// share of time in the period-2 state is compatible with the reference's (the 95 % interval
+// of the difference holds 0). A bistable layer's period is a draw from its states, which
+// round-off alone changes; the share of time in each state is not (docs/studies.md). A
+// candidate much less precise than the reference passes a 2-sigma test by its own error bar:
+// that says nothing, and is marked.
+void judge(const ModelHierarchy& m, ModelCandidate& c) {
   c.sigma = sigmaDistance(c.speed, m.reference);
+  c.share_gap = shareDifference(c.share, m.reference_share);
   c.powerless = std::isfinite(c.speed.error) && std::isfinite(m.reference.error) &&
                 c.speed.error > 2 * std::max(m.reference.error, 1e-12);
   c.reproduces = !c.powerless && std::isfinite(c.sigma) && std::abs(c.sigma) <= 2.0 &&
-                 m.reference_period > 0 && period == m.reference_period;
+                 c.share_gap.compatible();
 }
 
 FailureCase particleFailure(const RunSet& runs, int law, double gamma) {
@@ -130,10 +147,13 @@ ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int l
   in.seeds = seedsOf(c, runs, law);
   for (const std::string tag : {"", "constant e ", "no rotation "})
     for (int sd : in.seeds) {
+      const std::string label =
+          WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd));
       SeedRun r;
-      if (auto p = particleFields(
-              runs, WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd)))) {
-        r = {true, impactFronts(p->fronts), p->layer_period};
+      if (auto p = particleFields(runs, label)) {
+        const StateSeries st = readStateSeries(runs.get(label).fieldsPath());
+        r = {true,         impactFronts(p->fronts), p->layer_period,
+             st.windows(), st.period2_windows,      st.effective_windows};
       }
       in.particles[tag].push_back(r);
     }
@@ -145,28 +165,35 @@ ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int l
 ModelHierarchy judgeModels(const WaveFrontsConfig& c, const ModelInputs& in, int law,
                            const std::vector<int>& pick) {
   ModelHierarchy m;
-  m.reference_period = overSeeds(in, "", pick, m.reference, m.reference_periods);
+  const OverSeeds ref = overSeeds(in, "", pick);
+  m.reference = ref.speed;
+  m.reference_periods = ref.periods;
+  m.reference_period = ref.mode;
+  m.reference_share = ref.share;
   for (const CandidateSpec& cand : candidateSpecs(c, law)) {
     ModelCandidate mc;
     mc.description = cand.description;
     mc.key = cand.hydro ? cand.label : "ED " + cand.label;
     while (!mc.key.empty() && mc.key.back() == ' ') mc.key.pop_back();
-    int period = 0;
     if (cand.hydro) {
       const HydroOutcome& h = in.hydro.at(cand.label);
       mc.failed = !h.fields;
       mc.failure = "failed: " + shortReason(h.failure);
       if (h.fields) {
         mc.speed = h.fronts.all;
-        period = h.fields->periodic ? h.fields->period : 0;
+        const int period = h.fields->periodic ? h.fields->period : 0;
         mc.periods = period ? std::to_string(period) : "none";
+        mc.share = exactStateShare(period);
       }
     } else {
-      period = overSeeds(in, cand.label, pick, mc.speed, mc.periods);
+      const OverSeeds o = overSeeds(in, cand.label, pick);
+      mc.speed = o.speed;
+      mc.periods = o.periods;
+      mc.share = o.share;
       mc.failed = mc.periods.empty();
       mc.failure = "failed: every seed";
     }
-    if (!mc.failed) judge(m, mc, period);
+    if (!mc.failed) judge(m, mc);
     if (mc.reproduces && m.simplest.empty()) m.simplest = mc.description;
     m.candidates.push_back(mc);
   }
@@ -241,9 +268,15 @@ void writeModels(h5::File& f, const std::string& root, int law, const ModelHiera
   const std::string g = fmt::format("{}/models/{}", root, kLawNames[law]);
   for (const ModelCandidate& c : m.candidates)
     if (!c.failed) putMeasurement(f, g, c.key, c.speed);
+  f.createGroup(g);
+  // Time in the period-2 state: the reference's with its 95 % interval, each candidate's.
+  putValue(f, g, "reference_period2_share", m.reference_share.share);
+  putValue(f, g, "reference_period2_share_low", m.reference_share.low);
+  putValue(f, g, "reference_period2_share_high", m.reference_share.high);
+  for (const ModelCandidate& c : m.candidates)
+    if (!c.failed) putValue(f, g, c.key + " period2_share", c.share.share);
   // The verdict and its stability over seeds (docs/studies.md, "Verdict stability").
   const VerdictStability& v = m.stability;
-  f.createGroup(g);
   f.writeStringAttribute(g, "simplest", v.verdict);
   f.writeStringAttribute(g, "verdict", v.decided ? v.verdict : "undecided");
   putValue(f, g, "verdict_agreement", v.agreement);

@@ -100,6 +100,18 @@ Figure hydroFailureMap(const WaveFrontsConfig& c, const FailureMap& m) {
   return fm;
 }
 
+// "0.58 (0.49–0.66)"; an exact share (deterministic model) alone; "–" if unknown.
+std::string shareText(const StateShare& s) {
+  if (!s.known()) return "–";
+  if (s.effective_windows == 0) return fmt::format("{:.0f} (exact)", s.share);
+  return fmt::format("{:.2f} ({:.2f}–{:.2f})", s.share, s.low, s.high);
+}
+
+std::string gapText(const ShareDifference& d) {
+  if (std::isnan(d.difference)) return "–";
+  return fmt::format("{:+.2f} ({:+.2f} to {:+.2f})", d.difference, d.low, d.high);
+}
+
 // The period a hydro candidate gave ("2", "none") or why it has none.
 std::string hydroPeriod(const ModelHierarchy& m, const std::string& key) {
   for (const ModelCandidate& c : m.candidates)
@@ -208,28 +220,41 @@ void modelSection(const WaveFrontsConfig&, const WaveFrontsResults& r, Report& r
       "Reference: the full particle model (rotation with Coulomb friction, velocity-dependent "
       "restitution), combined over seeds. Candidates from the simplest up; a candidate "
       "reproduces the reference if its mean impact-front speed lies within 2 combined sigma and "
-      "its centre-of-mass period is the reference's most frequent period over the seeds. "
+      "its share of time in the period-2 state is compatible with the reference's: the 95 % "
+      "interval of the difference (Newcombe's hybrid score interval over the effective numbers "
+      "of 12-cycle windows) holds 0. A hydro run is deterministic: its share is 0 for period 1, "
+      "1 for period 2, and unknown otherwise. The share, not the period of each run, is "
+      "compared, because a bistable layer's period is a draw from its states that round-off "
+      "alone changes. "
       "Particle candidates run with the same seeds and are combined the same way. Each verdict "
       "comes with its stability: the share of bootstrap resamples of the seeds that give the "
       "same verdict; below the study's [verdicts] agreement, seeds are added up to [particles] "
       "max_seeds, and a verdict still short of it is undecided.");
   Table t;
   t.title = "Model hierarchy against the full particle model";
-  t.columns = {"layer", "model", "front speed (m/s)", "Δ / σ", "period (T)", "reproduces"};
+  t.columns = {"layer",
+               "model",
+               "front speed (m/s)",
+               "Δ / σ",
+               "period (T)",
+               "time in period 2 (95 %)",
+               "share − reference's (95 %)",
+               "reproduces"};
   std::string verdicts;
   for (int law = 0; law < kLaws; ++law) {
     const std::string name = kLawNames[law];
     const ModelHierarchy& m = r.models[law];
     t.rows.push_back({name, "particles, full model (reference)", format(m.reference), "0",
                       m.reference_periods + " (mode " + std::to_string(m.reference_period) + ")",
-                      "–"});
+                      shareText(m.reference_share), "–", "–"});
     for (const ModelCandidate& c : m.candidates) {
       if (c.failed) {
-        t.rows.push_back({name, c.description, c.failure, "–", "–", "no (fails)"});
+        t.rows.push_back({name, c.description, c.failure, "–", "–", "–", "–", "no (fails)"});
         continue;
       }
       t.rows.push_back({name, c.description, format(c.speed), formatNumber(c.sigma, 1),
-                        c.periods.empty() ? "–" : c.periods,
+                        c.periods.empty() ? "–" : c.periods, shareText(c.share),
+                        gapText(c.share_gap),
                         c.reproduces  ? "yes"
                         : c.powerless ? "cannot tell (error > 2x the reference's)"
                                       : "no"});

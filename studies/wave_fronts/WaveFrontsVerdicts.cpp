@@ -105,10 +105,11 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
     s.seed_share = static_cast<double>(s.seeds_period2) / s.seeds;
     wilsonInterval(s.seed_share, s.seeds, s.seed_low, s.seed_high);
   }
-  if (s.windows > 0) {
-    s.time_share = static_cast<double>(s.windows_period2) / s.windows;
-    wilsonInterval(s.time_share, std::max(1.0, s.effective_windows), s.time_low, s.time_high);
-  }
+  // The same pooled share as the model hierarchy's reference (StateShare.hpp).
+  const StateShare time = pooledStateShare(s.windows, s.windows_period2, s.effective_windows);
+  s.time_share = time.share;
+  s.time_low = time.low;
+  s.time_high = time.high;
   for (int k = 0; k < 2; ++k) {
     s.front[k] = combineImpactFronts(fronts[k]).all;
     s.front_seeds[k] = static_cast<int>(fronts[k].size());

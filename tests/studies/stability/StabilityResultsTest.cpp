@@ -10,6 +10,8 @@
 // number of Gamma values, on the grid and over the seed resamples (median inside its 95 %
 // interval); a difference in any symbol counts each point once, so the count of "any" lies
 // between the largest and the sum of the counts by symbol, and equals the stored count.
+// Seeds are added (max_seeds = 3, seed_step = 1) only while a feature is undecided and only at
+// points whose seeds disagree.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -72,6 +74,25 @@ TEST_F(StabilityResults, DifferenceCountsByCategoryAreCountsOfGammaPointsWithInt
   for (std::size_t i = 0; i < any.size(); ++i) {
     EXPECT_GE(any[i], std::max({state[i], waves[i], kinks[i]}));
     EXPECT_LE(any[i], state[i] + waves[i] + kinks[i]);
+  }
+}
+
+TEST_F(StabilityResults, SeedsAreAddedWhereTheSeedsDisagreeWhileAFeatureIsUndecided) {
+  const auto seeds = study().series(kRoot + "/seeds_per_point");
+  const auto dry = study().series(kRoot + "/dry/seeds_agree");
+  const auto wet = study().series(kRoot + "/wet/seeds_agree");
+  ASSERT_EQ(seeds.size(), dry.size());
+  bool added = false, split_left_at_two = false;
+  for (std::size_t p = 0; p < seeds.size(); ++p) {
+    EXPECT_TRUE(seeds[p] == 2 || seeds[p] == 3) << "point " << p << ": " << seeds[p] << " seeds";
+    added = added || seeds[p] == 3;
+    split_left_at_two = split_left_at_two || (seeds[p] == 2 && !(dry[p] && wet[p]));
+  }
+  // A round adds a seed at every point whose seeds disagree, so a split point left at two
+  // seeds means no round ran, which needs every feature decided (at least 90 % of resamples).
+  if (split_left_at_two) {
+    EXPECT_FALSE(added);
+    EXPECT_EQ(study().value(kRoot + "/seed_bootstrap", "undecided"), 0);
   }
 }
 
