@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -102,6 +103,8 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
   next_record_ = saved.next_record;
   virial_ = saved.virial;
   virial_since_ = saved.virial_since;
+  bottom_impulse_ = saved.bottom_impulse;
+  sleeps_ = saved.sleeps;
 }
 
 EngineState EdSimulation::state() const {
@@ -117,6 +120,8 @@ EngineState EdSimulation::state() const {
   s.next_record = next_record_;
   s.virial = virial_;
   s.virial_since = virial_since_;
+  s.bottom_impulse = bottom_impulse_;
+  s.sleeps = sleeps_;
   return s;
 }
 
@@ -163,6 +168,9 @@ void EdSimulation::advance(int i, double t) {
   } else {
     // The wall carries the particle: its energy changes by the wall's work.
     const double before = particleEnergy(s);
+    // The bottom's support over dt: m (g dt + change of the plate's velocity).
+    if (s.motion == Motion::RideBottom)
+      bottom_impulse_ += cfg_.mass * (cfg_.gravity * dt + plateAt(t).velocity - s.vz);
     s.x += s.vx * dt;
     s.z = plateAt(t).height + s.ride_offset;
     s.vz = plateAt(t).velocity;
@@ -209,6 +217,14 @@ bool EdSimulation::wallPushes(WallId wall, double t) const {
 Vec2 EdSimulation::position(int i) const {
   const ParticleState s = extrapolated(i, now_);
   return {s.x, s.z};
+}
+
+double EdSimulation::bottomImpulse() const {
+  double impulse = bottom_impulse_;
+  for (const ParticleState& s : p_)
+    if (s.motion == Motion::RideBottom)
+      impulse += cfg_.mass * (cfg_.gravity * (now_ - s.t) + plateAt(now_).velocity - s.vz);
+  return impulse;
 }
 
 Vec2 EdSimulation::velocity(int i) const {
@@ -350,6 +366,15 @@ RunStatus EdSimulation::run(const std::atomic<bool>* interrupt,
   }
   st.time = now_;
   st.events = obs_.events;
+  if (std::getenv("GW_DEBUG")) {  // DEBUG-TEMP
+    int asleep_n = 0, riders = 0;
+    for (const ParticleState& q : p_) {
+      asleep_n += asleep(q);
+      riders += q.motion != Motion::Ballistic;
+    }
+    fmt::print(stderr, "DEBUG sleeps {} asleep {} riders {} bottom_impulse/(N m g t) {:.6f}\n", sleeps_, asleep_n, riders,
+               bottomImpulse() / (size() * cfg_.mass * cfg_.gravity * now_));
+  }
   return st;
 }
 

@@ -12,6 +12,7 @@
 // at worst, for many equal times), memory O(N).
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -112,6 +113,14 @@ class EdSimulation {
   // Current lab-frame position of particle i (extrapolated).
   Vec2 position(int i) const;
   Vec2 velocity(int i) const;
+  // Vertical impulse the bottom has given the particles since t = 0 (N s): impacts, the
+  // velocity absorbed when a particle comes to rest on it or on its riders, and the
+  // continuous support of everything it carries, the integral of m (g + z_b'') over the time
+  // each particle rides it (to now()). Over a window, its increase divided by the window's
+  // length is the plate's time-averaged force; at rest it equals N m g.
+  double bottomImpulse() const;
+  // Particles put to sleep so far (docs/physics.md, "Resting contacts", item 7).
+  std::uint64_t sleeps() const { return sleeps_; }
 
  private:
   void setUp(int particles);
@@ -174,6 +183,32 @@ class EdSimulation {
     obs_.pair_impact_loss += impact * (1.0 - e_n * e_n);
   }
   bool tcElastic(int i, int j) const;
+  // Sleep rule (RestingSleep.cpp): a particle whose last kSleepStreak collisions were all in
+  // enduring contact, slower than sleepSpeed(), with no flying particle below it, and which
+  // rests on the bottom or on its riders, is carried by the bottom with no motion of its own.
+  static constexpr std::uint16_t kSleepStreak = 64;
+  // A partner is below k when the contact normal (partner -> k) points up by more than 30
+  // degrees from the horizontal; particles closer than kContactGap d touch.
+  static constexpr double kBelow = 0.5, kContactGap = 1e-4;
+  double sleepSpeed() const { return 0.1 * std::sqrt(cfg_.gravity * cfg_.diameter); }
+  // Before noteCollision (it reads the previous collision time): partner < 0 is a wall,
+  // n points from the partner to k, v_n is the normal approach speed.
+  void noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_k);
+  bool restsOnBottom(int k) const;
+  void sleepIfAtRest(int k);
+  // Asleep: carried by the bottom with no motion of its own (fallAsleep).
+  static bool asleep(const ParticleState& s) {
+    return s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
+  }
+  // Flyer f hits carried particle r slowly; n from r to f, press: riderPress of r on f.
+  void bounceOffCarried(int f, int r, Vec2 n, double v_n, double press);
+  void fallAsleep(int k);
+  // A rider that left the bottom no longer carries the riders resting on it: they, and the
+  // ones resting on them, fly again.
+  void wakeRestingOn(int k);
+  void bookBottomImpulse(const ParticleState& s, double dvz) {
+    if (s.motion == Motion::RideBottom) bottom_impulse_ += cfg_.mass * dvz;
+  }
   void checkEventBudget() const;
   // state
   void advance(int i, double t);
@@ -212,6 +247,8 @@ class EdSimulation {
   double next_record_ = 0;
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)
   double virial_since_ = 0;
+  double bottom_impulse_ = 0;  // N s, to the particles' own times (bottomImpulse)
+  std::uint64_t sleeps_ = 0;
   bool rotation_ = false;
   mutable PlateState plate_;  // plateAt's memory
   mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();

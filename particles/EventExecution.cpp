@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 #include "particles/EdSimulation.hpp"
@@ -75,6 +76,16 @@ void EdSimulation::noteCollision(int i, int partner) {
     s.burst = 0;
   }
   if (++s.burst > cfg_.collapse_collisions) {
+    if (std::getenv("GW_DEBUG")) {  // DEBUG-TEMP
+      const double d = cfg_.diameter;
+      for (int k = 0; k < size(); ++k) {
+        const ParticleState q = extrapolated(k, now_);
+        const double dx = q.x - s.x, dz = q.z - s.z;
+        if (dx * dx + dz * dz < 4.1 * d * d)
+          fmt::print(stderr, "p{} x/d={:.9f} z/d={:.9f} vx={:.3e} vz={:.3e} mot={} rat={} off/d={:.9f} last={:.3e} zb={:.3e} vb={:.3e} ab={:.3e}\n", k, q.x / d, q.z / d, q.vx, q.vz - plateAt(now_).velocity,
+                     int(q.motion), q.rattle, q.ride_offset / d, now_ - q.last_collision, plateAt(now_).height, plateAt(now_).velocity, plateAt(now_).acceleration);
+      }
+    }
     const std::string with = partner >= 0 ? fmt::format("particle {}", partner) : "a wall";
     throw InelasticCollapse(
         fmt::format("inelastic collapse at t = {:.9f} s: particle {} collided {} times within "
@@ -110,13 +121,18 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
   ParticleState& s = p_[i];
   if (slidesIntoSupport(r_rider_to_i.x, s.vx - rider.vx)) return false;
   const double before = particleEnergy(s) + particleEnergy(rider);
-  if (cfg_.tangential.friction > 0.0) {
+  if (cfg_.tangential.friction > 0.0 && asleep(rider)) {
+    // On a sleeper, which the bottom holds still, static friction stops it: it sleeps too.
+    s.vx = 0.0;
+    s.omega = 0.0;
+  } else if (cfg_.tangential.friction > 0.0) {
     const double vx = 0.5 * (s.vx + rider.vx);
     s.vx = vx;
     rider.vx = vx;
   }
   s.motion = rider.motion;
   s.ride_offset = s.z - plateAt(now_).height;
+  bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
   s.vz = plateAt(now_).velocity;
   obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
   ++obs_.collisions.rests;
@@ -146,15 +162,26 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   const double e_n = elastic ? 1.0 : cfg_.restitution(closing);
   const double before = particleEnergy(a) + particleEnergy(b);
   if (!elastic) bookImpact(closing, e_n);
-  const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
-  a.vx = mean - e_n * half;
-  b.vx = mean + e_n * half;
+  if (cfg_.tc > 0.0 && closing <= sleepSpeed() && (asleep(a) || asleep(b))) {
+    // A slow hit on a sleeper: the bottom holds it (RestingSleep.cpp), the other rebounds.
+    ParticleState& mover = asleep(a) ? b : a;
+    mover.vx = -e_n * mover.vx;
+  } else {
+    const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
+    a.vx = mean - e_n * half;
+    b.vx = mean + e_n * half;
+  }
   obs_.dissipated_energy += before - particleEnergy(a) - particleEnergy(b);
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, closing, 0.5 * (a.z + b.z), elastic});
+  const Vec2 n{rx > 0 ? 1.0 : -1.0, 0.0};  // the contact acts horizontally (j -> i)
+  noteRattle(i, j, closing, n);
+  noteRattle(j, i, closing, {-n.x, 0.0});
   noteCollision(i, j);
   noteCollision(j, i);
+  sleepIfAtRest(i);
+  sleepIfAtRest(j);
   predict(i);
   predict(j);
 }
@@ -191,6 +218,13 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     predict(j);
     return;
   }
+  if (cfg_.tc > 0.0 && (a_rides ? asleep(a) : b_rides && asleep(b)) && vn <= sleepSpeed()) {
+    if (a_rides)
+      bounceOffCarried(j, i, {-n.x, -n.z}, vn, press);
+    else
+      bounceOffCarried(i, j, n, vn, press);
+    return;
+  }
   const bool elastic = tcElastic(i, j);
   const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
   const double before = particleEnergy(a) + particleEnergy(b);
@@ -209,9 +243,13 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
+  noteRattle(i, j, vn, n);
+  noteRattle(j, i, vn, {-n.x, -n.z});
   noteCollision(i, j);
   noteCollision(j, i);
   if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, press, -pairNormalSpeed(n, c.v1, c.v2));
+  sleepIfAtRest(i);
+  sleepIfAtRest(j);
   predict(i);
   predict(j);
 }
@@ -231,6 +269,7 @@ void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, doub
     // particle joins the rigid layer on the wall.
     ParticleState& rider = a_rides ? a : b;
     const double before_rider = particleEnergy(rider);
+    bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
     rider.vz = plateAt(now_).velocity;
     obs_.dissipated_energy += before_rider - particleEnergy(rider);
     attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
@@ -244,6 +283,7 @@ void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, doub
     const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
     if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
       const double before_rider = particleEnergy(rider);
+      bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
       rider.vz = plateAt(now_).velocity;
       obs_.dissipated_energy += before_rider - particleEnergy(rider);
       attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
@@ -252,8 +292,14 @@ void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, doub
   if (!attached) {
     // A collision with a vertical impulse knocks riders off their wall; one pushed into the
     // wall hits it at once (and rests again if the wall still pushes it).
-    if (a_rides && a.vz != plateAt(now_).velocity) a.motion = Motion::Ballistic;
-    if (b_rides && b.vz != plateAt(now_).velocity) b.motion = Motion::Ballistic;
+    if (a_rides && a.vz != plateAt(now_).velocity) {
+      a.motion = Motion::Ballistic;
+      wakeRestingOn(i);
+    }
+    if (b_rides && b.vz != plateAt(now_).velocity) {
+      b.motion = Motion::Ballistic;
+      wakeRestingOn(j);
+    }
   }
 }
 
@@ -321,11 +367,13 @@ void EdSimulation::doWall(int i, WallId wall) {
         0.5 * m * ((c.v.x - vw.x) * (c.v.x - vw.x) + (c.v.z - vw.z) * (c.v.z - vw.z)) +
         0.5 * inertia * c.w * c.w;
     obs_.dissipated_energy += rel_before - rel_after;
+    if (wall == kBottom) bottom_impulse_ += m * (c.v.z - s.vz);
     s.vx = c.v.x;
     s.vz = c.v.z;
     s.omega = c.w;
     ++obs_.collisions.wall;
     if (elastic) ++obs_.collisions.tc_elastic;
+    noteRattle(i, -1, approach, n);
     noteCollision(i, -1);
     obs_.wall_work += particleEnergy(s) - before + (rel_before - rel_after);
   } else {
@@ -340,7 +388,9 @@ void EdSimulation::doWall(int i, WallId wall) {
     startRiding(i, wall);
   } else if (s.motion != Motion::Ballistic && (s.vz != plateAt(now_).velocity)) {
     s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity
+    wakeRestingOn(i);
   }
+  sleepIfAtRest(i);
   predict(i);
 }
 
@@ -350,8 +400,9 @@ void EdSimulation::startRiding(int i, WallId wall) {
   const double zb = plateAt(now_).height;
   s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
   s.z = zb + s.ride_offset;
-  s.vz = plateAt(now_).velocity;
   s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
+  bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
+  s.vz = plateAt(now_).velocity;
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
   const double after = particleEnergy(s);
   obs_.dissipated_energy += before - after;
