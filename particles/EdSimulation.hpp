@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdlib>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -190,7 +191,7 @@ class EdSimulation {
   // A partner is below k when the contact normal (partner -> k) points up by more than 30
   // degrees from the horizontal; particles closer than kContactGap d touch.
   static constexpr double kBelow = 0.5, kContactGap = 1e-4;
-  double sleepSpeed() const { return 0.1 * std::sqrt(cfg_.gravity * cfg_.diameter); }
+  double sleepSpeed() const { static const double f = std::getenv("GW_SV") ? std::atof(std::getenv("GW_SV")) : 0.1; return f * std::sqrt(cfg_.gravity * cfg_.diameter); }  // DEBUG-TEMP
   // Before noteCollision (it reads the previous collision time): partner < 0 is a wall,
   // n points from the partner to k, v_n is the normal approach speed.
   void noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_k);

@@ -23,7 +23,8 @@ void EdSimulation::noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_
   // breaks the streak.
   const bool flyer_below = partner >= 0 && p_[partner].motion == Motion::Ballistic &&
                            n_partner_to_k.z > kBelow;
-  if (v_n > sleepSpeed() || flyer_below || s.motion == Motion::RideLid) {
+  const bool fast = s.motion == Motion::Ballistic && v_n > sleepSpeed();
+  if (fast || flyer_below || s.motion == Motion::RideLid) {
     s.rattle = 0;
     return;
   }
