@@ -109,6 +109,10 @@ double EdSimulation::riderPress(const ParticleState& rider, const ParticleState&
   // Relative acceleration of a flying particle with respect to a rider is
   // (0, -g - z_b''); the contact is compressed if it points against n (rider -> other).
   if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return 0.0;
+  // At the take-off instant itself g + z_b'' is zero up to round-off: the wall's own rule
+  // (the jerk's sign) says whether it still holds its riders; without it a particle could
+  // join a layer that has just taken off and ride a whole cycle too long.
+  if (!wallPushes(rider.motion == Motion::RideBottom ? kBottom : kLid, now_)) return 0.0;
   return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z;
 }
 
@@ -131,6 +135,7 @@ bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i)
     rider.vx = vx;
   }
   s.motion = rider.motion;
+  if (std::getenv("GW_DEBUG") && !wallPushes(kBottom, now_)) fmt::print(stderr, "DBG attach {} t={}\n", i, now_);  // DEBUG-TEMP
   s.ride_offset = s.z - plateAt(now_).height;
   bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
   s.vz = plateAt(now_).velocity;
@@ -401,6 +406,7 @@ void EdSimulation::startRiding(int i, WallId wall) {
   s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
   s.z = zb + s.ride_offset;
   s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
+  if (std::getenv("GW_DEBUG") && !wallPushes(wall, now_)) fmt::print(stderr, "DBG ride {} t={}\n", i, now_);  // DEBUG-TEMP
   bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
   s.vz = plateAt(now_).velocity;
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
