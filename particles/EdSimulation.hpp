@@ -195,7 +195,14 @@ class EdSimulation {
   // Before noteCollision (it reads the previous collision time): partner < 0 is a wall,
   // n points from the partner to k, v_n is the normal approach speed.
   void noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_k);
-  bool restsOnBottom(int k) const;
+  // k's contacts (closer than kContactGap d): the bottom, or a carried particle from below
+  // (bottom); a flying one from below; carried ones or side walls on either side (held_*);
+  // anything level with it on either side (left, right).
+  struct Contacts {
+    bool bottom = false, flyer_below = false;
+    bool held_left = false, held_right = false, left = false, right = false;
+  };
+  Contacts contactsOf(int k) const;
   void sleepIfAtRest(int k);
   // Asleep: carried by the bottom with no motion of its own (fallAsleep).
   static bool asleep(const ParticleState& s) {

@@ -31,45 +31,59 @@ void EdSimulation::noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_
   if (now_ - s.last_collision < cfg_.tc && s.rattle < kSleepStreak) ++s.rattle;
 }
 
-bool EdSimulation::restsOnBottom(int k) const {
-  // Whether k is held by the bottom, directly or through what it carries, while the bottom
-  // pushes (z_b'' > -g): it is wedged between carried particles or side walls on both sides
-  // (a particle in a row that fills the box exactly, held there by its side contacts), or it
-  // touches the bottom or a carried particle from above and no flying particle from below
-  // (which is no support: it may still fall).
-  if (!wallPushes(kBottom, now_)) return false;
+EdSimulation::Contacts EdSimulation::contactsOf(int k) const {
   const ParticleState& s = p_[k];
-  if (s.motion == Motion::RideBottom) return true;
   const double d = cfg_.diameter, tol = kContactGap * d;
-  bool below = s.z - 0.5 * d - plateAt(now_).height <= tol;
-  bool left = !cfg_.periodic_x && s.x - 0.5 * d <= tol;
-  bool right = !cfg_.periodic_x && cfg_.width - 0.5 * d - s.x <= tol;
-  bool flyer_below = false;
+  Contacts c;
+  c.bottom = s.motion == Motion::RideBottom || s.z - 0.5 * d - plateAt(now_).height <= tol;
+  c.held_left = c.left = !cfg_.periodic_x && s.x - 0.5 * d <= tol;
+  c.held_right = c.right = !cfg_.periodic_x && cfg_.width - 0.5 * d - s.x <= tol;
   const double reach2 = (d + tol) * (d + tol);
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(k), nb);
-  for (int c = 0; c < m; ++c) {
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+  for (int n = 0; n < m; ++n) {
+    for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
       if (j == k) continue;
       const ParticleState o = extrapolated(j, now_);
-      const double rx = s.x - o.x - nb[c].shift_x, rz = s.z - o.z - nb[c].shift_z;
+      const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
       if (rx * rx + rz * rz > reach2) continue;
-      const bool from_below = rz > kBelow * d;
+      const bool from_below = rz > kBelow * d, level = std::abs(rz) <= kBelow * d;
+      c.left = c.left || (level && rx > 0.0);
+      c.right = c.right || (level && rx < 0.0);
       if (o.motion == Motion::Ballistic) {
-        flyer_below = flyer_below || from_below;
-        continue;
+        c.flyer_below = c.flyer_below || from_below;
+      } else if (o.motion == Motion::RideBottom) {
+        c.bottom = c.bottom || from_below;
+        c.held_left = c.held_left || rx > 0.0;
+        c.held_right = c.held_right || rx < 0.0;
       }
-      if (o.motion != Motion::RideBottom) continue;
-      below = below || from_below;
-      left = left || rx > 0.0;
-      right = right || rx < 0.0;
     }
   }
-  return (left && right) || (below && !flyer_below);
+  return c;
 }
 
 void EdSimulation::sleepIfAtRest(int k) {
-  if (p_[k].rattle >= kSleepStreak && restsOnBottom(k)) fallAsleep(k);
+  // Held by the bottom, directly or through what it carries, while the bottom pushes
+  // (z_b'' > -g): wedged between carried particles or side walls on both sides (a particle
+  // in a row that fills the box exactly, held there by its side contacts), or touching the
+  // bottom or a carried particle from above and no flying particle from below (which is no
+  // support: it may still fall).
+  if (p_[k].rattle < kSleepStreak) return;
+  const Contacts c = contactsOf(k);
+  if (wallPushes(kBottom, now_) &&
+      ((c.held_left && c.held_right) || (c.bottom && !c.flyer_below))) {
+    fallAsleep(k);
+  } else if (c.left && c.right && p_[k].motion == Motion::Ballistic) {
+    // Not held yet, but jammed sideways with no gap on either side: its horizontal rattle
+    // would repeat at one instant for ever. It stops sideways (the loss is booked) and goes
+    // on falling onto its supports.
+    ParticleState& s = p_[k];
+    const double before = particleEnergy(s);
+    s.vx = 0.0;
+    s.rattle = 0;
+    ++s.counter;
+    obs_.dissipated_energy += before - particleEnergy(s);
+  }
 }
 
 void EdSimulation::fallAsleep(int k) {
