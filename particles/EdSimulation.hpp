@@ -192,9 +192,9 @@ class EdSimulation {
   // degrees from the horizontal; particles closer than kContactGap d touch.
   static constexpr double kBelow = 0.5, kContactGap = 1e-4;
   double sleepSpeed() const { static const double f = std::getenv("GW_SV") ? std::atof(std::getenv("GW_SV")) : 0.1; return f * std::sqrt(cfg_.gravity * cfg_.diameter); }  // DEBUG-TEMP
-  // Before noteCollision (it reads the previous collision time): partner < 0 is a wall,
-  // n points from the partner to k, v_n is the normal approach speed.
-  void noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_k);
+  // Before noteCollision (it reads the previous collision time); v_n is the normal
+  // approach speed.
+  void noteRattle(int k, double v_n);
   // k's contacts (closer than kContactGap d): the bottom, or a carried particle from below
   // (bottom); a flying one from below; carried ones or side walls on either side (held_*);
   // anything level with it on either side (left, right).
@@ -203,6 +203,7 @@ class EdSimulation {
     bool held_left = false, held_right = false, left = false, right = false;
   };
   Contacts contactsOf(int k) const;
+  void moveTogether(int k, bool held);
   void sleepIfAtRest(int k);
   // Asleep: carried by the bottom with no motion of its own (fallAsleep).
   static bool asleep(const ParticleState& s) {

@@ -180,9 +180,8 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, closing, 0.5 * (a.z + b.z), elastic});
-  const Vec2 n{rx > 0 ? 1.0 : -1.0, 0.0};  // the contact acts horizontally (j -> i)
-  noteRattle(i, j, closing, n);
-  noteRattle(j, i, closing, {-n.x, 0.0});
+  noteRattle(i, closing);
+  noteRattle(j, closing);
   noteCollision(i, j);
   noteCollision(j, i);
   sleepIfAtRest(i);
@@ -248,8 +247,8 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
-  noteRattle(i, j, vn, n);
-  noteRattle(j, i, vn, {-n.x, -n.z});
+  noteRattle(i, vn);
+  noteRattle(j, vn);
   noteCollision(i, j);
   noteCollision(j, i);
   if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, press, -pairNormalSpeed(n, c.v1, c.v2));
@@ -378,7 +377,7 @@ void EdSimulation::doWall(int i, WallId wall) {
     s.omega = c.w;
     ++obs_.collisions.wall;
     if (elastic) ++obs_.collisions.tc_elastic;
-    noteRattle(i, -1, approach, n);
+    noteRattle(i, approach);
     noteCollision(i, -1);
     obs_.wall_work += particleEnergy(s) - before + (rel_before - rel_after);
   } else {

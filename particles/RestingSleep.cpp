@@ -13,18 +13,16 @@
 
 namespace granwave {
 
-void EdSimulation::noteRattle(int k, int partner, double v_n, Vec2 n_partner_to_k) {
+void EdSimulation::noteRattle(int k, double v_n) {
   if (cfg_.tc <= 0.0) return;
   ParticleState& s = p_[k];
-  // A fast collision breaks the streak, and so does one with a flying partner below k,
-  // which is no support yet (it may still fall). A slow one counts when it is enduring: it
-  // follows k's previous collision within t_c, so the TC model makes it elastic on k's
-  // account. A slow one after a longer pause dissipates as usual: it neither counts nor
-  // breaks the streak.
-  const bool flyer_below = partner >= 0 && p_[partner].motion == Motion::Ballistic &&
-                           n_partner_to_k.z > kBelow;
-  const bool fast = s.motion == Motion::Ballistic && v_n > sleepSpeed();
-  if (fast || flyer_below || s.motion == Motion::RideLid) {
+  // A collision counts when it is enduring: it follows k's previous one within t_c, so the
+  // TC model makes it elastic on k's account. A flying particle's collision faster than the
+  // sleep speed breaks the streak (it is being hit, not resting); a slow one after a longer
+  // pause dissipates as usual and neither counts nor breaks it. A carried particle moves
+  // only sideways, at no gap from its neighbours when it rattles: any enduring collision
+  // counts.
+  if (s.motion == Motion::RideLid || (s.motion == Motion::Ballistic && v_n > sleepSpeed())) {
     s.rattle = 0;
     return;
   }
@@ -73,17 +71,50 @@ void EdSimulation::sleepIfAtRest(int k) {
   if (wallPushes(kBottom, now_) &&
       ((c.held_left && c.held_right) || (c.bottom && !c.flyer_below))) {
     fallAsleep(k);
-  } else if (c.left && c.right && p_[k].motion == Motion::Ballistic) {
-    // Not held yet, but jammed sideways with no gap on either side: its horizontal rattle
-    // would repeat at one instant for ever. It stops sideways (the loss is booked) and goes
-    // on falling onto its supports.
-    ParticleState& s = p_[k];
-    const double before = particleEnergy(s);
-    s.vx = 0.0;
-    s.rattle = 0;
-    ++s.counter;
-    obs_.dissipated_energy += before - particleEnergy(s);
+  } else if (p_[k].motion == Motion::Ballistic) {
+    moveTogether(k, c.bottom || c.held_left || c.held_right);
   }
+}
+
+void EdSimulation::moveTogether(int k, bool held) {
+  // Not held yet: k and the flying particles touching it, in enduring contact, stop moving
+  // relative to each other, and relative to the bottom if they touch something it holds (a
+  // side wall or a carried particle): a perfectly inelastic collision of the group, its
+  // kinetic energy (relative to the holder) booked as loss. Otherwise a group jammed at no
+  // gap, e.g. a row between a carried particle and a side wall, would rattle at one
+  // instant for ever. It goes on falling as one onto its supports.
+  const double d = cfg_.diameter, reach2 = d * d * (1.0 + kContactGap) * (1.0 + kContactGap);
+  std::vector<int> group{k};
+  CellGrid::Neighbour nb[9];
+  const int m = cells_.neighbours(cells_.cellOf(k), nb);
+  const ParticleState s = extrapolated(k, now_);
+  for (int n = 0; n < m; ++n) {
+    for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
+      if (j == k || p_[j].motion != Motion::Ballistic) continue;
+      const ParticleState o = extrapolated(j, now_);
+      const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
+      if (rx * rx + rz * rz <= reach2) group.push_back(j);
+    }
+  }
+  double vx = 0, vz = 0, before = 0;
+  for (int j : group) {
+    advance(j, now_);
+    vx += p_[j].vx;
+    vz += p_[j].vz;
+    before += particleEnergy(p_[j]);
+  }
+  vx = held ? 0.0 : vx / static_cast<double>(group.size());
+  vz = held ? plateAt(now_).velocity : vz / static_cast<double>(group.size());
+  double after = 0;
+  for (int j : group) {
+    p_[j].vx = vx;
+    p_[j].vz = vz;
+    p_[j].rattle = 0;
+    ++p_[j].counter;
+    after += particleEnergy(p_[j]);
+    if (j != k) predict(j);
+  }
+  obs_.dissipated_energy += before - after;
 }
 
 void EdSimulation::fallAsleep(int k) {
@@ -165,7 +196,7 @@ void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double pre
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, v_n, s.z - 0.5 * cfg_.diameter * n.z, elastic});
-  noteRattle(f, r, v_n, n);
+  noteRattle(f, v_n);
   noteCollision(f, r);
   noteCollision(r, f);
   if (press > 0.0 && e_n * v_n <= restSpeed(press)) attachToRider(f, c, {n.x * cfg_.diameter, n.z * cfg_.diameter});
