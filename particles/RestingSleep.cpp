@@ -6,6 +6,7 @@
 // once its contacts have stayed slow for a while and waking it when something hits it
 // (Box2D, Bullet: islands of bodies resting on each other); here the sleeper is carried by
 // the bottom like a rider, z = z_b(t) + offset, with no horizontal motion of its own.
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -84,16 +85,20 @@ void EdSimulation::moveTogether(int k, bool held) {
   // gap, e.g. a row between a carried particle and a side wall, would rattle at one
   // instant for ever. It goes on falling as one onto its supports.
   const double d = cfg_.diameter, reach2 = d * d * (1.0 + kContactGap) * (1.0 + kContactGap);
+  // The group: every flying particle connected to k through touching flying particles.
   std::vector<int> group{k};
-  CellGrid::Neighbour nb[9];
-  const int m = cells_.neighbours(cells_.cellOf(k), nb);
-  const ParticleState s = extrapolated(k, now_);
-  for (int n = 0; n < m; ++n) {
-    for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
-      if (j == k || p_[j].motion != Motion::Ballistic) continue;
-      const ParticleState o = extrapolated(j, now_);
-      const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
-      if (rx * rx + rz * rz <= reach2) group.push_back(j);
+  for (std::size_t g = 0; g < group.size(); ++g) {
+    const int a = group[g];
+    const ParticleState s = extrapolated(a, now_);
+    CellGrid::Neighbour nb[9];
+    const int m = cells_.neighbours(cells_.cellOf(a), nb);
+    for (int n = 0; n < m; ++n) {
+      for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
+        if (j == a || p_[j].motion != Motion::Ballistic || std::find(group.begin(), group.end(), j) != group.end()) continue;
+        const ParticleState o = extrapolated(j, now_);
+        const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
+        if (rx * rx + rz * rz <= reach2) group.push_back(j);
+      }
     }
   }
   double vx = 0, vz = 0, before = 0;
