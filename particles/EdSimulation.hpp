@@ -203,7 +203,7 @@ class EdSimulation {
     bool held_left = false, held_right = false, left = false, right = false;
   };
   Contacts contactsOf(int k) const;
-  void moveTogether(int k, bool held);
+  void moveTogether(int k);
   void sleepIfAtRest(int k);
   // Asleep: carried by the bottom with no motion of its own (fallAsleep).
   static bool asleep(const ParticleState& s) {

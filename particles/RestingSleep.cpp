@@ -73,11 +73,11 @@ void EdSimulation::sleepIfAtRest(int k) {
       ((c.held_left && c.held_right) || (c.bottom && !c.flyer_below))) {
     fallAsleep(k);
   } else if (p_[k].motion == Motion::Ballistic) {
-    moveTogether(k, c.bottom || c.held_left || c.held_right);
+    moveTogether(k);
   }
 }
 
-void EdSimulation::moveTogether(int k, bool held) {
+void EdSimulation::moveTogether(int k) {
   // Not held yet: k and the flying particles touching it, in enduring contact, stop moving
   // relative to each other, and relative to the bottom if they touch something it holds (a
   // side wall or a carried particle): a perfectly inelastic collision of the group, its
@@ -85,19 +85,28 @@ void EdSimulation::moveTogether(int k, bool held) {
   // gap, e.g. a row between a carried particle and a side wall, would rattle at one
   // instant for ever. It goes on falling as one onto its supports.
   const double d = cfg_.diameter, reach2 = d * d * (1.0 + kContactGap) * (1.0 + kContactGap);
-  // The group: every flying particle connected to k through touching flying particles.
+  // The group: every flying particle connected to k through touching flying particles;
+  // held if one of them touches the bottom, a side wall or a carried particle.
   std::vector<int> group{k};
+  bool held = false;
   for (std::size_t g = 0; g < group.size(); ++g) {
     const int a = group[g];
     const ParticleState s = extrapolated(a, now_);
+    const double tol = kContactGap * d;
+    held = held || s.z - 0.5 * d - plateAt(now_).height <= tol ||
+           (!cfg_.periodic_x && (s.x - 0.5 * d <= tol || cfg_.width - 0.5 * d - s.x <= tol));
     CellGrid::Neighbour nb[9];
     const int m = cells_.neighbours(cells_.cellOf(a), nb);
     for (int n = 0; n < m; ++n) {
       for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
-        if (j == a || p_[j].motion != Motion::Ballistic || std::find(group.begin(), group.end(), j) != group.end()) continue;
+        if (j == a || std::find(group.begin(), group.end(), j) != group.end()) continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
-        if (rx * rx + rz * rz <= reach2) group.push_back(j);
+        if (rx * rx + rz * rz > reach2) continue;
+        if (o.motion == Motion::Ballistic)
+          group.push_back(j);
+        else
+          held = true;
       }
     }
   }
