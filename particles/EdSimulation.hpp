@@ -191,7 +191,7 @@ class EdSimulation {
   // A partner is below k when the contact normal (partner -> k) points up by more than 30
   // degrees from the horizontal; particles closer than kContactGap d touch.
   static constexpr double kBelow = 0.5, kContactGap = 1e-4;
-  double sleepSpeed() const { static const double f = std::getenv("GW_SV") ? std::atof(std::getenv("GW_SV")) : 0.1; return f * std::sqrt(cfg_.gravity * cfg_.diameter); }  // DEBUG-TEMP
+  double sleepSpeed() const { return std::sqrt(cfg_.gravity * cfg_.diameter); }
   // Before noteCollision (it reads the previous collision time); v_n is the normal
   // approach speed.
   void noteRattle(int k, double v_n);
