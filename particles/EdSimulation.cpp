@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
@@ -366,15 +365,6 @@ RunStatus EdSimulation::run(const std::atomic<bool>* interrupt,
   }
   st.time = now_;
   st.events = obs_.events;
-  if (std::getenv("GW_DEBUG")) {  // DEBUG-TEMP
-    int asleep_n = 0, riders = 0;
-    for (const ParticleState& q : p_) {
-      asleep_n += asleep(q);
-      riders += q.motion != Motion::Ballistic;
-    }
-    fmt::print(stderr, "DEBUG sleeps {} asleep {} riders {} bottom_impulse/(N m g t) {:.6f}\n", sleeps_, asleep_n, riders,
-               bottomImpulse() / (size() * cfg_.mass * cfg_.gravity * now_));
-  }
   return st;
 }
 

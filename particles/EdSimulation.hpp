@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -184,13 +183,17 @@ class EdSimulation {
     obs_.pair_impact_loss += impact * (1.0 - e_n * e_n);
   }
   bool tcElastic(int i, int j) const;
-  // Sleep rule (RestingSleep.cpp): a particle whose last kSleepStreak collisions were all in
-  // enduring contact, slower than sleepSpeed(), with no flying particle below it, and which
-  // rests on the bottom or on its riders, is carried by the bottom with no motion of its own.
-  static constexpr std::uint16_t kSleepStreak = 64;
+  // Sleep rule (RestingContact.cpp; docs/physics.md, "Resting contacts", item 7): after
+  // kSleepStreak consecutive enduring collisions (each within t_c of the previous one, a
+  // flyer's slower than sleepSpeed()), a particle held by the bottom is carried by it with
+  // no motion of its own; one not held yet stops moving relative to the flyers it touches.
+  // 16: the paper's dry scene (Gamma = 4) never reaches it (8 does), and the cost of a layer
+  // settling after each landing grows in proportion to it.
+  static constexpr std::uint16_t kSleepStreak = 16;
   // A partner is below k when the contact normal (partner -> k) points up by more than 30
   // degrees from the horizontal; particles closer than kContactGap d touch.
   static constexpr double kBelow = 0.5, kContactGap = 1e-4;
+  // Slower hits than the speed of a fall through d / 2 are resting contacts, not impacts.
   double sleepSpeed() const { return std::sqrt(cfg_.gravity * cfg_.diameter); }
   // Before noteCollision (it reads the previous collision time); v_n is the normal
   // approach speed.
@@ -258,6 +261,7 @@ class EdSimulation {
   double virial_since_ = 0;
   double bottom_impulse_ = 0;  // N s, to the particles' own times (bottomImpulse)
   std::uint64_t sleeps_ = 0;
+  std::vector<char> in_group_;  // moveTogether's scratch: members of the group
   bool rotation_ = false;
   mutable PlateState plate_;  // plateAt's memory
   mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 #include "particles/EdSimulation.hpp"
@@ -76,16 +75,6 @@ void EdSimulation::noteCollision(int i, int partner) {
     s.burst = 0;
   }
   if (++s.burst > cfg_.collapse_collisions) {
-    if (std::getenv("GW_DEBUG")) {  // DEBUG-TEMP
-      const double d = cfg_.diameter;
-      for (int k = 0; k < size(); ++k) {
-        const ParticleState q = extrapolated(k, now_);
-        const double dx = q.x - s.x, dz = q.z - s.z;
-        if (dx * dx + dz * dz < 4.1 * d * d)
-          fmt::print(stderr, "p{} x/d={:.9f} z/d={:.9f} vx={:.3e} vz={:.3e} mot={} rat={} off/d={:.9f} last={:.3e} zb={:.3e} vb={:.3e} ab={:.3e}\n", k, q.x / d, q.z / d, q.vx, q.vz - plateAt(now_).velocity,
-                     int(q.motion), q.rattle, q.ride_offset / d, now_ - q.last_collision, plateAt(now_).height, plateAt(now_).velocity, plateAt(now_).acceleration);
-      }
-    }
     const std::string with = partner >= 0 ? fmt::format("particle {}", partner) : "a wall";
     throw InelasticCollapse(
         fmt::format("inelastic collapse at t = {:.9f} s: particle {} collided {} times within "
@@ -116,34 +105,6 @@ double EdSimulation::riderPress(const ParticleState& rider, const ParticleState&
   return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z;
 }
 
-bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
-  // A particle at rest on a rider that presses it moves rigidly with the rider's wall (a
-  // resting layer on a plate); the residual normal motion, at most rest_velocity, is lost.
-  // With friction, static friction makes the pair slide together (common horizontal
-  // velocity, momentum conserved); without it, a particle sliding into its support would
-  // graze it at once, so it stays in flight.
-  ParticleState& s = p_[i];
-  if (slidesIntoSupport(r_rider_to_i.x, s.vx - rider.vx)) return false;
-  const double before = particleEnergy(s) + particleEnergy(rider);
-  if (cfg_.tangential.friction > 0.0 && asleep(rider)) {
-    // On a sleeper, which the bottom holds still, static friction stops it: it sleeps too.
-    s.vx = 0.0;
-    s.omega = 0.0;
-  } else if (cfg_.tangential.friction > 0.0) {
-    const double vx = 0.5 * (s.vx + rider.vx);
-    s.vx = vx;
-    rider.vx = vx;
-  }
-  s.motion = rider.motion;
-  if (std::getenv("GW_DEBUG") && !wallPushes(kBottom, now_)) fmt::print(stderr, "DBG attach {} t={}\n", i, now_);  // DEBUG-TEMP
-  s.ride_offset = s.z - plateAt(now_).height;
-  bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
-  s.vz = plateAt(now_).velocity;
-  obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
-  ++obs_.collisions.rests;
-  return true;
-}
-
 void EdSimulation::doRiderPair(int i, int j, double rx) {
   // Two particles carried by the same wall: their vertical separation is fixed, so the
   // contact acts horizontally (the wall takes any vertical impulse). The normal approach
@@ -168,7 +129,7 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   const double before = particleEnergy(a) + particleEnergy(b);
   if (!elastic) bookImpact(closing, e_n);
   if (cfg_.tc > 0.0 && closing <= sleepSpeed() && (asleep(a) || asleep(b))) {
-    // A slow hit on a sleeper: the bottom holds it (RestingSleep.cpp), the other rebounds.
+    // A slow hit on a sleeper: the bottom holds it (RestingContact.cpp), the other rebounds.
     ParticleState& mover = asleep(a) ? b : a;
     mover.vx = -e_n * mover.vx;
   } else {
@@ -258,74 +219,6 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   predict(j);
 }
 
-// After an impact involving a rider (i's partner j; n from j to i, r = x_i - x_j): the other
-// particle comes to rest on a pressing rider or is pinched against it and joins the rigid layer;
-// otherwise a rider given a vertical impulse leaves its wall.
-void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, double separation) {
-  const bool pressed = press > 0.0;
-  ParticleState& a = p_[i];
-  ParticleState& b = p_[j];
-  const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
-  const double rx = r.x, rz = r.z;
-  bool attached = false;
-  if (pressed && separation <= restSpeed(press)) {
-    // Came to rest on a pressing rider: the rider's support takes the impulse, the other
-    // particle joins the rigid layer on the wall.
-    ParticleState& rider = a_rides ? a : b;
-    const double before_rider = particleEnergy(rider);
-    bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
-    rider.vz = plateAt(now_).velocity;
-    obs_.dissipated_energy += before_rider - particleEnergy(rider);
-    attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
-  }
-  if (!attached && pressed) {
-    // A flyer pressed by a rider into another rider of the same wall is pinched between two
-    // bodies that move together: it joins them (a flyer pinched against the wall itself is
-    // caught in doWall).
-    ParticleState& rider = a_rides ? a : b;
-    const int flyer = a_rides ? j : i;
-    const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
-    if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
-      const double before_rider = particleEnergy(rider);
-      bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
-      rider.vz = plateAt(now_).velocity;
-      obs_.dissipated_energy += before_rider - particleEnergy(rider);
-      attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
-    }
-  }
-  if (!attached) {
-    // A collision with a vertical impulse knocks riders off their wall; one pushed into the
-    // wall hits it at once (and rests again if the wall still pushes it).
-    if (a_rides && a.vz != plateAt(now_).velocity) {
-      a.motion = Motion::Ballistic;
-      wakeRestingOn(i);
-    }
-    if (b_rides && b.vz != plateAt(now_).velocity) {
-      b.motion = Motion::Ballistic;
-      wakeRestingOn(j);
-    }
-  }
-}
-
-bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {
-  // Does a particle carried rigidly with the same wall (`rigid`) touch i on the side `away`?
-  // Then i, pushed against the wall (or another rider) from the other side, has no room to
-  // move: bouncing between two bodies that move together would repeat at one instant.
-  const ParticleState& s = p_[i];
-  const double d2 = cfg_.diameter * cfg_.diameter * (1.0 + 2e-9);
-  CellGrid::Neighbour nb[9];
-  const int m = cells_.neighbours(cells_.cellOf(i), nb);
-  for (int c = 0; c < m; ++c) {
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
-      if (j == i || j == exclude || p_[j].motion != rigid) continue;
-      const ParticleState o = extrapolated(j, now_);
-      const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
-      if (rx * rx + rz * rz <= d2 && rx * away.x + rz * away.z > 0.0) return true;
-    }
-  }
-  return false;
-}
-
 void EdSimulation::doWall(int i, WallId wall) {
   advance(i, now_);
   ParticleState& s = p_[i];
@@ -405,7 +298,6 @@ void EdSimulation::startRiding(int i, WallId wall) {
   s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
   s.z = zb + s.ride_offset;
   s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
-  if (std::getenv("GW_DEBUG") && !wallPushes(wall, now_)) fmt::print(stderr, "DBG ride {} t={}\n", i, now_);  // DEBUG-TEMP
   bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
   s.vz = plateAt(now_).velocity;
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.

@@ -1,5 +1,7 @@
-// Sleep and wake of particles at rest on the bottom (docs/physics.md, "Resting contacts",
-// item 7). With the TC model on, a particle held by two or more supports (in the pocket
+// Resting contacts (docs/physics.md, "Resting contacts"): particles coming to rest on a
+// rider (item 2), and sleep and wake of particles at rest on the bottom (item 7).
+//
+// With the TC model on, a particle held by two or more supports (in the pocket
 // between two riders, in a row between both side walls) rattles elastically for ever: every
 // collision comes within t_c of its last, so none dissipates (Luding & McNamara 1998 call it
 // an enduring contact). Rigid-body engines end such rattling by putting the body to sleep
@@ -88,6 +90,8 @@ void EdSimulation::moveTogether(int k) {
   // The group: every flying particle connected to k through touching flying particles;
   // held if one of them touches the bottom, a side wall or a carried particle.
   std::vector<int> group{k};
+  in_group_.assign(p_.size(), 0);
+  in_group_[k] = 1;
   bool held = false;
   for (std::size_t g = 0; g < group.size(); ++g) {
     const int a = group[g];
@@ -99,14 +103,16 @@ void EdSimulation::moveTogether(int k) {
     const int m = cells_.neighbours(cells_.cellOf(a), nb);
     for (int n = 0; n < m; ++n) {
       for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
-        if (j == a || std::find(group.begin(), group.end(), j) != group.end()) continue;
+        if (j == a || in_group_[j]) continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
         if (rx * rx + rz * rz > reach2) continue;
-        if (o.motion == Motion::Ballistic)
+        if (o.motion == Motion::Ballistic) {
           group.push_back(j);
-        else
+          in_group_[j] = 1;
+        } else {
           held = true;
+        }
       }
     }
   }
@@ -182,9 +188,6 @@ void EdSimulation::wakeRestingOn(int k) {
   }
 }
 
-}  // namespace granwave
-
-namespace granwave {
 
 void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double press) {
   // A slow impact on a particle the bottom carries (v_n at most the sleep speed): the bottom
@@ -217,6 +220,102 @@ void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double pre
   sleepIfAtRest(f);
   predict(f);
   predict(r);
+}
+
+
+bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
+  // A particle at rest on a rider that presses it moves rigidly with the rider's wall (a
+  // resting layer on a plate); the residual normal motion, at most rest_velocity, is lost.
+  // With friction, static friction makes the pair slide together (common horizontal
+  // velocity, momentum conserved); without it, a particle sliding into its support would
+  // graze it at once, so it stays in flight.
+  ParticleState& s = p_[i];
+  if (slidesIntoSupport(r_rider_to_i.x, s.vx - rider.vx)) return false;
+  const double before = particleEnergy(s) + particleEnergy(rider);
+  if (cfg_.tangential.friction > 0.0 && asleep(rider)) {
+    // On a sleeper, which the bottom holds still, static friction stops it: it sleeps too.
+    s.vx = 0.0;
+    s.omega = 0.0;
+  } else if (cfg_.tangential.friction > 0.0) {
+    const double vx = 0.5 * (s.vx + rider.vx);
+    s.vx = vx;
+    rider.vx = vx;
+  }
+  s.motion = rider.motion;
+  s.ride_offset = s.z - plateAt(now_).height;
+  bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
+  s.vz = plateAt(now_).velocity;
+  obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
+  ++obs_.collisions.rests;
+  return true;
+}
+
+// After an impact involving a rider (i's partner j; n from j to i, r = x_i - x_j): the other
+// particle comes to rest on a pressing rider or is pinched against it and joins the rigid layer;
+// otherwise a rider given a vertical impulse leaves its wall.
+void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, double separation) {
+  const bool pressed = press > 0.0;
+  ParticleState& a = p_[i];
+  ParticleState& b = p_[j];
+  const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
+  const double rx = r.x, rz = r.z;
+  bool attached = false;
+  if (pressed && separation <= restSpeed(press)) {
+    // Came to rest on a pressing rider: the rider's support takes the impulse, the other
+    // particle joins the rigid layer on the wall.
+    ParticleState& rider = a_rides ? a : b;
+    const double before_rider = particleEnergy(rider);
+    bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
+    rider.vz = plateAt(now_).velocity;
+    obs_.dissipated_energy += before_rider - particleEnergy(rider);
+    attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
+  }
+  if (!attached && pressed) {
+    // A flyer pressed by a rider into another rider of the same wall is pinched between two
+    // bodies that move together: it joins them (a flyer pinched against the wall itself is
+    // caught in doWall).
+    ParticleState& rider = a_rides ? a : b;
+    const int flyer = a_rides ? j : i;
+    const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
+    if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
+      const double before_rider = particleEnergy(rider);
+      bookBottomImpulse(rider, plateAt(now_).velocity - rider.vz);
+      rider.vz = plateAt(now_).velocity;
+      obs_.dissipated_energy += before_rider - particleEnergy(rider);
+      attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
+    }
+  }
+  if (!attached) {
+    // A collision with a vertical impulse knocks riders off their wall; one pushed into the
+    // wall hits it at once (and rests again if the wall still pushes it).
+    if (a_rides && a.vz != plateAt(now_).velocity) {
+      a.motion = Motion::Ballistic;
+      wakeRestingOn(i);
+    }
+    if (b_rides && b.vz != plateAt(now_).velocity) {
+      b.motion = Motion::Ballistic;
+      wakeRestingOn(j);
+    }
+  }
+}
+
+bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {
+  // Does a particle carried rigidly with the same wall (`rigid`) touch i on the side `away`?
+  // Then i, pushed against the wall (or another rider) from the other side, has no room to
+  // move: bouncing between two bodies that move together would repeat at one instant.
+  const ParticleState& s = p_[i];
+  const double d2 = cfg_.diameter * cfg_.diameter * (1.0 + 2e-9);
+  CellGrid::Neighbour nb[9];
+  const int m = cells_.neighbours(cells_.cellOf(i), nb);
+  for (int c = 0; c < m; ++c) {
+    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+      if (j == i || j == exclude || p_[j].motion != rigid) continue;
+      const ParticleState o = extrapolated(j, now_);
+      const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
+      if (rx * rx + rz * rz <= d2 && rx * away.x + rz * away.z > 0.0) return true;
+    }
+  }
+  return false;
 }
 
 }  // namespace granwave
