@@ -74,7 +74,7 @@ void EdSimulation::sleepIfAtRest(int k) {
   if (wallPushes(kBottom, now_) &&
       ((c.held_left && c.held_right) || (c.bottom && !c.flyer_below))) {
     fallAsleep(k);
-  } else if (p_[k].motion == Motion::Ballistic) {
+  } else if (p_[k].motion == Motion::Ballistic && c.left && c.right) {
     moveTogether(k);
   }
 }
@@ -106,7 +106,7 @@ void EdSimulation::moveTogether(int k) {
         if (j == a || in_group_[j]) continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
-        if (rx * rx + rz * rz > reach2) continue;
+        if (rx * rx + rz * rz > reach2 || std::abs(rz) > kBelow * d) continue;
         if (o.motion == Motion::Ballistic) {
           group.push_back(j);
           in_group_[j] = 1;
