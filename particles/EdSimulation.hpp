@@ -186,7 +186,8 @@ class EdSimulation {
   // Sleep rule (RestingContact.cpp; docs/physics.md, "Resting contacts", item 7): after
   // kSleepStreak consecutive enduring collisions (each within t_c of the previous one, a
   // flyer's slower than sleepSpeed()), a particle held by the bottom is carried by it with
-  // no motion of its own; one not held yet stops moving relative to the flyers it touches.
+  // no motion of its own; one not held yet but jammed sideways stops moving relative to the
+  // flyers connected to it (moveTogether).
   // 16: the paper's dry scene (Gamma = 4) never reaches it (8 does), and the cost of a layer
   // settling after each landing grows in proportion to it.
   static constexpr std::uint16_t kSleepStreak = 16;

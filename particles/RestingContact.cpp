@@ -80,7 +80,8 @@ void EdSimulation::sleepIfAtRest(int k) {
 }
 
 void EdSimulation::moveTogether(int k) {
-  // Not held yet: k and the flying particles touching it, in enduring contact, stop moving
+  // Not held yet, but jammed sideways (touching something level with it on both sides):
+  // k and the flying particles connected to it through contacts stop moving
   // relative to each other, and relative to the bottom if they touch something it holds (a
   // side wall or a carried particle): a perfectly inelastic collision of the group, its
   // kinetic energy (relative to the holder) booked as loss. Otherwise a group jammed at no
@@ -106,7 +107,7 @@ void EdSimulation::moveTogether(int k) {
         if (j == a || in_group_[j]) continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
-        if (rx * rx + rz * rz > reach2 || std::abs(rz) > kBelow * d) continue;
+        if (rx * rx + rz * rz > reach2) continue;
         if (o.motion == Motion::Ballistic) {
           group.push_back(j);
           in_group_[j] = 1;
