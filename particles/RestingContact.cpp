@@ -173,7 +173,8 @@ void EdSimulation::wakeRestingOn(int k) {
     for (int c = 0; c < m; ++c) {
       for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
         // Riders at the bottom's own contact height are held by the bottom itself.
-        if (j == a || p_[j].motion != Motion::RideBottom || p_[j].ride_offset <= 0.5 * d * (1 + 1e-9))
+        if (j == a || p_[j].motion != Motion::RideBottom ||
+            p_[j].ride_offset <= 0.5 * d * (1 + 1e-9))
           continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
@@ -189,7 +190,6 @@ void EdSimulation::wakeRestingOn(int k) {
   }
 }
 
-
 void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double press) {
   // A slow impact on a particle the bottom carries (v_n at most the sleep speed): the bottom
   // takes it, through the carried particle, which keeps its motion (it wakes only when hit
@@ -204,8 +204,7 @@ void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double pre
   const double un = ux * n.x + uz * n.z;  // -v_n
   const double rel_before = 0.5 * cfg_.mass * (ux * ux + uz * uz);
   const double dvx = -(1.0 + e_n) * un * n.x, dvz = -(1.0 + e_n) * un * n.z;
-  const double rel_after =
-      0.5 * cfg_.mass * ((ux + dvx) * (ux + dvx) + (uz + dvz) * (uz + dvz));
+  const double rel_after = 0.5 * cfg_.mass * ((ux + dvx) * (ux + dvx) + (uz + dvz) * (uz + dvz));
   s.vx += dvx;
   s.vz += dvz;
   bookBottomImpulse(c, dvz);
@@ -213,16 +212,17 @@ void EdSimulation::bounceOffCarried(int f, int r, Vec2 n, double v_n, double pre
   obs_.wall_work += particleEnergy(s) - before + (rel_before - rel_after);
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
-  if (impact_observer_) impact_observer_->pairImpact({now_, v_n, s.z - 0.5 * cfg_.diameter * n.z, elastic});
+  if (impact_observer_)
+    impact_observer_->pairImpact({now_, v_n, s.z - 0.5 * cfg_.diameter * n.z, elastic});
   noteRattle(f, v_n);
   noteCollision(f, r);
   noteCollision(r, f);
-  if (press > 0.0 && e_n * v_n <= restSpeed(press)) attachToRider(f, c, {n.x * cfg_.diameter, n.z * cfg_.diameter});
+  if (press > 0.0 && e_n * v_n <= restSpeed(press))
+    attachToRider(f, c, {n.x * cfg_.diameter, n.z * cfg_.diameter});
   sleepIfAtRest(f);
   predict(f);
   predict(r);
 }
-
 
 bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
   // A particle at rest on a rider that presses it moves rigidly with the rider's wall (a

@@ -18,30 +18,34 @@ struct Drive {
   std::string law, gamma;
 };
 
+std::string testName(const Drive& p) {
+  std::string g = p.gamma;
+  for (char& ch : g)
+    if (ch == '.') ch = '_';
+  return p.law + "_Gamma" + g;
+}
+
 class GentlyShakenLayer : public ::testing::TestWithParam<Drive> {};
 
+// Runs the paper's scene of this law at this Gamma and seed for its 15 s.
+void expectFifteenSeconds(const Drive& p, int seed) {
+  const Scene s =
+      parseSceneFile(std::string(GRANWAVE_SOURCE_DIR) + "/scenes/paper-" + p.law + ".toml",
+                     {"drive.gamma=" + p.gamma, "run.seed=" + std::to_string(seed)});
+  const EngineConfig c = engineConfig(s);
+  EdSimulation sim(c, initialCondition(s, c));
+  EXPECT_NO_THROW(sim.run()) << p.law << ", Gamma " << p.gamma << ", seed " << seed;
+  EXPECT_EQ(sim.now(), 15.0) << p.law << ", Gamma " << p.gamma << ", seed " << seed;
+}
+
 TEST_P(GentlyShakenLayer, RunsFifteenSecondsWithoutCollapseForTenSeeds) {
-  const Drive& p = GetParam();
-  for (int seed = 1; seed <= 10; ++seed) {
-    const Scene s =
-        parseSceneFile(std::string(GRANWAVE_SOURCE_DIR) + "/scenes/paper-" + p.law + ".toml",
-                       {"drive.gamma=" + p.gamma, "run.seed=" + std::to_string(seed)});
-    const EngineConfig c = engineConfig(s);
-    EdSimulation sim(c, initialCondition(s, c));
-    EXPECT_NO_THROW(sim.run()) << p.law << ", Gamma " << p.gamma << ", seed " << seed;
-    EXPECT_EQ(sim.now(), 15.0) << p.law << ", Gamma " << p.gamma << ", seed " << seed;
-  }
+  for (int seed = 1; seed <= 10; ++seed) expectFifteenSeconds(GetParam(), seed);
 }
 
 INSTANTIATE_TEST_SUITE_P(TenHertz, GentlyShakenLayer,
                          ::testing::Values(Drive{"dry", "0.5"}, Drive{"dry", "1"},
                                            Drive{"dry", "1.2"}, Drive{"wet", "0.5"},
                                            Drive{"wet", "1"}, Drive{"wet", "1.2"}),
-                         [](const auto& info) {
-                           std::string g = info.param.gamma;
-                           for (char& ch : g)
-                             if (ch == '.') ch = '_';
-                           return info.param.law + "_Gamma" + g;
-                         });
+                         [](const auto& info) { return testName(info.param); });
 
 }  // namespace

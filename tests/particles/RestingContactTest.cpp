@@ -151,8 +151,7 @@ Scene pouredPacking(int n, double duration) {
 // the L_x = 30 d box exactly rattled elastically within t_c for ever) now run past their
 // stopping time (0.206, 0.242 and 0.139 s) to 1 s.
 TEST(RestingContact, SettlingDryLayerOnStillPlateRunsPastTheOldCollapse) {
-  EXPECT_EQ(runToEnd(paperFile("dry", {"drive.frequency=0", "run.seed=2", "run.duration=1"})),
-            1.0);
+  EXPECT_EQ(runToEnd(paperFile("dry", {"drive.frequency=0", "run.seed=2", "run.duration=1"})), 1.0);
 }
 
 TEST(RestingContact, DryLayerAtGammaOneRunsPastTheOldCollapse) {
@@ -160,8 +159,7 @@ TEST(RestingContact, DryLayerAtGammaOneRunsPastTheOldCollapse) {
 }
 
 TEST(RestingContact, SettlingWetLayerOnStillPlateRunsPastTheOldCollapse) {
-  EXPECT_EQ(runToEnd(paperFile("wet", {"drive.frequency=0", "run.seed=2", "run.duration=1"})),
-            1.0);
+  EXPECT_EQ(runToEnd(paperFile("wet", {"drive.frequency=0", "run.seed=2", "run.duration=1"})), 1.0);
 }
 
 TEST(RestingContact, PouredPackingSettlesAndThePlateCarriesItsWeight) {
