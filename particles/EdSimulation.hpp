@@ -50,7 +50,8 @@ struct EngineConfig {
   TangentialRule wall_tangential = TangentialRule::Smooth;  // walls (outside the TC time)
   TangentialRule tc_tangential = TangentialRule::Smooth;    // collisions the TC model makes elastic
   TcWindowRule tc_window = TcWindowRule::Rolling;
-  double tc = 0;  // s; 0 = TC model off
+  double tc = 0;       // s; 0 = TC model off
+  bool sleep = false;  // put particles at rest on the bottom to sleep (RestingContact.cpp)
   double rest_velocity = 1e-6;
   double duration = 1;  // s
   double record_interval = 0.01;

@@ -69,7 +69,7 @@ void EdSimulation::sleepIfAtRest(int k) {
   // in a row that fills the box exactly, held there by its side contacts), or touching the
   // bottom or a carried particle from above and no flying particle from below (which is no
   // support: it may still fall).
-  if (p_[k].rattle < kSleepStreak) return;
+  if (!cfg_.sleep || p_[k].rattle < kSleepStreak) return;
   const Contacts c = contactsOf(k);
   if (wallPushes(kBottom, now_) &&
       ((c.held_left && c.held_right) || (c.bottom && !c.flyer_below))) {

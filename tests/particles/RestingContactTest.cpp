@@ -232,3 +232,19 @@ TEST(RestingContact, SleepStateRestartsBitIdenticallyThroughTheArchive) {
   }
   EXPECT_GT(whole.sleeps(), 0u);
 }
+
+TEST(RestingContact, SleepIsOnByDefaultOnlyWhereThePlateCannotLiftTheLayer) {
+  // contact.sleep = "auto": on with no drive or Gamma <= 1 (a resting layer stays at rest, so
+  // stopping its own motion is exact), off on a layer that flies (Gamma > 1).
+  const std::string wet = std::string(GRANWAVE_SOURCE_DIR) + "/scenes/paper-wet.toml";
+  auto sleeps = [&](std::vector<std::string> set) {
+    return engineConfig(parseSceneFile(wet, set)).sleep;
+  };
+  EXPECT_FALSE(sleeps({}));  // the paper's Gamma = 4
+  EXPECT_FALSE(sleeps({"drive.gamma=1.2"}));
+  EXPECT_TRUE(sleeps({"drive.gamma=1"}));
+  EXPECT_TRUE(sleeps({"drive.gamma=0.5"}));
+  EXPECT_TRUE(sleeps({"drive.frequency=0"}));
+  EXPECT_TRUE(sleeps({"contact.sleep=\"on\""}));
+  EXPECT_FALSE(sleeps({"drive.gamma=0.5", "contact.sleep=\"off\""}));
+}
