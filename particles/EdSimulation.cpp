@@ -102,6 +102,8 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
   next_record_ = saved.next_record;
   virial_ = saved.virial;
   virial_since_ = saved.virial_since;
+  bottom_impulse_ = saved.bottom_impulse;
+  sleeps_ = saved.sleeps;
 }
 
 EngineState EdSimulation::state() const {
@@ -117,6 +119,8 @@ EngineState EdSimulation::state() const {
   s.next_record = next_record_;
   s.virial = virial_;
   s.virial_since = virial_since_;
+  s.bottom_impulse = bottom_impulse_;
+  s.sleeps = sleeps_;
   return s;
 }
 
@@ -163,6 +167,9 @@ void EdSimulation::advance(int i, double t) {
   } else {
     // The wall carries the particle: its energy changes by the wall's work.
     const double before = particleEnergy(s);
+    // The bottom's support over dt: m (g dt + change of the plate's velocity).
+    if (s.motion == Motion::RideBottom)
+      bottom_impulse_ += cfg_.mass * (cfg_.gravity * dt + plateAt(t).velocity - s.vz);
     s.x += s.vx * dt;
     s.z = plateAt(t).height + s.ride_offset;
     s.vz = plateAt(t).velocity;
@@ -209,6 +216,14 @@ bool EdSimulation::wallPushes(WallId wall, double t) const {
 Vec2 EdSimulation::position(int i) const {
   const ParticleState s = extrapolated(i, now_);
   return {s.x, s.z};
+}
+
+double EdSimulation::bottomImpulse() const {
+  double impulse = bottom_impulse_;
+  for (const ParticleState& s : p_)
+    if (s.motion == Motion::RideBottom)
+      impulse += cfg_.mass * (cfg_.gravity * (now_ - s.t) + plateAt(now_).velocity - s.vz);
+  return impulse;
 }
 
 Vec2 EdSimulation::velocity(int i) const {

@@ -12,6 +12,7 @@
 // at worst, for many equal times), memory O(N).
 #include <algorithm>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
@@ -49,7 +50,8 @@ struct EngineConfig {
   TangentialRule wall_tangential = TangentialRule::Smooth;  // walls (outside the TC time)
   TangentialRule tc_tangential = TangentialRule::Smooth;    // collisions the TC model makes elastic
   TcWindowRule tc_window = TcWindowRule::Rolling;
-  double tc = 0;  // s; 0 = TC model off
+  double tc = 0;       // s; 0 = TC model off
+  bool sleep = false;  // put particles at rest on the bottom to sleep (RestingContact.cpp)
   double rest_velocity = 1e-6;
   double duration = 1;  // s
   double record_interval = 0.01;
@@ -112,6 +114,14 @@ class EdSimulation {
   // Current lab-frame position of particle i (extrapolated).
   Vec2 position(int i) const;
   Vec2 velocity(int i) const;
+  // Vertical impulse the bottom has given the particles since t = 0 (N s): impacts, the
+  // velocity absorbed when a particle comes to rest on it or on its riders, and the
+  // continuous support of everything it carries, the integral of m (g + z_b'') over the time
+  // each particle rides it (to now()). Over a window, its increase divided by the window's
+  // length is the plate's time-averaged force; at rest it equals N m g.
+  double bottomImpulse() const;
+  // Particles put to sleep so far (docs/physics.md, "Resting contacts", item 7).
+  std::uint64_t sleeps() const { return sleeps_; }
 
  private:
   void setUp(int particles);
@@ -174,6 +184,45 @@ class EdSimulation {
     obs_.pair_impact_loss += impact * (1.0 - e_n * e_n);
   }
   bool tcElastic(int i, int j) const;
+  // Sleep rule (RestingContact.cpp; docs/physics.md, "Resting contacts", item 7): after
+  // kSleepStreak consecutive enduring collisions (each within t_c of the previous one, a
+  // flyer's slower than sleepSpeed()), a particle held by the bottom is carried by it with
+  // no motion of its own; one not held yet but jammed sideways stops moving relative to the
+  // flyers connected to it (moveTogether).
+  // 16: the paper's dry scene (Gamma = 4) never reaches it (8 does), and the cost of a layer
+  // settling after each landing grows in proportion to it.
+  static constexpr std::uint16_t kSleepStreak = 16;
+  // A partner is below k when the contact normal (partner -> k) points up by more than 30
+  // degrees from the horizontal; particles closer than kContactGap d touch.
+  static constexpr double kBelow = 0.5, kContactGap = 1e-4;
+  // Slower hits than the speed of a fall through d / 2 are resting contacts, not impacts.
+  double sleepSpeed() const { return std::sqrt(cfg_.gravity * cfg_.diameter); }
+  // Before noteCollision (it reads the previous collision time); v_n is the normal
+  // approach speed.
+  void noteRattle(int k, double v_n);
+  // k's contacts (closer than kContactGap d): the bottom, or a carried particle from below
+  // (bottom); a flying one from below; carried ones or side walls on either side (held_*);
+  // anything level with it on either side (left, right).
+  struct Contacts {
+    bool bottom = false, flyer_below = false;
+    bool held_left = false, held_right = false, left = false, right = false;
+  };
+  Contacts contactsOf(int k) const;
+  void moveTogether(int k);
+  void sleepIfAtRest(int k);
+  // Asleep: carried by the bottom with no motion of its own (fallAsleep).
+  static bool asleep(const ParticleState& s) {
+    return s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
+  }
+  // Flyer f hits carried particle r slowly; n from r to f, press: riderPress of r on f.
+  void bounceOffCarried(int f, int r, Vec2 n, double v_n, double press);
+  void fallAsleep(int k);
+  // A rider that left the bottom no longer carries the riders resting on it: they, and the
+  // ones resting on them, fly again.
+  void wakeRestingOn(int k);
+  void bookBottomImpulse(const ParticleState& s, double dvz) {
+    if (s.motion == Motion::RideBottom) bottom_impulse_ += cfg_.mass * dvz;
+  }
   void checkEventBudget() const;
   // state
   void advance(int i, double t);
@@ -212,6 +261,9 @@ class EdSimulation {
   double next_record_ = 0;
   double virial_ = 0;  // sum of r_ij . dp_i since the last record (pressure)
   double virial_since_ = 0;
+  double bottom_impulse_ = 0;  // N s, to the particles' own times (bottomImpulse)
+  std::uint64_t sleeps_ = 0;
+  std::vector<char> in_group_;  // moveTogether's scratch: members of the group
   bool rotation_ = false;
   mutable PlateState plate_;  // plateAt's memory
   mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();

@@ -29,6 +29,10 @@ struct EngineState {
   std::uint64_t records = 0;
   double next_record = 0;  // s
   double virial = 0, virial_since = 0;
+  // Cumulative vertical impulse the bottom gave the particles (N s; EdSimulation::
+  // bottomImpulse) and the number of particles put to sleep; 0 in states saved before.
+  double bottom_impulse = 0;
+  std::uint64_t sleeps = 0;
 };
 
 }  // namespace granwave

@@ -98,29 +98,11 @@ double EdSimulation::riderPress(const ParticleState& rider, const ParticleState&
   // Relative acceleration of a flying particle with respect to a rider is
   // (0, -g - z_b''); the contact is compressed if it points against n (rider -> other).
   if (rider.motion == Motion::Ballistic || other.motion != Motion::Ballistic) return 0.0;
+  // At the take-off instant itself g + z_b'' is zero up to round-off: the wall's own rule
+  // (the jerk's sign) says whether it still holds its riders; without it a particle could
+  // join a layer that has just taken off and ride a whole cycle too long.
+  if (!wallPushes(rider.motion == Motion::RideBottom ? kBottom : kLid, now_)) return 0.0;
   return (cfg_.gravity + plateAt(now_).acceleration) * n_rider_to_other.z;
-}
-
-bool EdSimulation::attachToRider(int i, ParticleState& rider, Vec2 r_rider_to_i) {
-  // A particle at rest on a rider that presses it moves rigidly with the rider's wall (a
-  // resting layer on a plate); the residual normal motion, at most rest_velocity, is lost.
-  // With friction, static friction makes the pair slide together (common horizontal
-  // velocity, momentum conserved); without it, a particle sliding into its support would
-  // graze it at once, so it stays in flight.
-  ParticleState& s = p_[i];
-  if (slidesIntoSupport(r_rider_to_i.x, s.vx - rider.vx)) return false;
-  const double before = particleEnergy(s) + particleEnergy(rider);
-  if (cfg_.tangential.friction > 0.0) {
-    const double vx = 0.5 * (s.vx + rider.vx);
-    s.vx = vx;
-    rider.vx = vx;
-  }
-  s.motion = rider.motion;
-  s.ride_offset = s.z - plateAt(now_).height;
-  s.vz = plateAt(now_).velocity;
-  obs_.dissipated_energy += before - particleEnergy(s) - particleEnergy(rider);
-  ++obs_.collisions.rests;
-  return true;
 }
 
 void EdSimulation::doRiderPair(int i, int j, double rx) {
@@ -146,15 +128,25 @@ void EdSimulation::doRiderPair(int i, int j, double rx) {
   const double e_n = elastic ? 1.0 : cfg_.restitution(closing);
   const double before = particleEnergy(a) + particleEnergy(b);
   if (!elastic) bookImpact(closing, e_n);
-  const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
-  a.vx = mean - e_n * half;
-  b.vx = mean + e_n * half;
+  if (cfg_.tc > 0.0 && closing <= sleepSpeed() && (asleep(a) || asleep(b))) {
+    // A slow hit on a sleeper: the bottom holds it (RestingContact.cpp), the other rebounds.
+    ParticleState& mover = asleep(a) ? b : a;
+    mover.vx = -e_n * mover.vx;
+  } else {
+    const double mean = 0.5 * (a.vx + b.vx), half = 0.5 * (a.vx - b.vx);
+    a.vx = mean - e_n * half;
+    b.vx = mean + e_n * half;
+  }
   obs_.dissipated_energy += before - particleEnergy(a) - particleEnergy(b);
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, closing, 0.5 * (a.z + b.z), elastic});
+  noteRattle(i, closing);
+  noteRattle(j, closing);
   noteCollision(i, j);
   noteCollision(j, i);
+  sleepIfAtRest(i);
+  sleepIfAtRest(j);
   predict(i);
   predict(j);
 }
@@ -191,6 +183,13 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
     predict(j);
     return;
   }
+  if (cfg_.tc > 0.0 && (a_rides ? asleep(a) : b_rides && asleep(b)) && vn <= sleepSpeed()) {
+    if (a_rides)
+      bounceOffCarried(j, i, {-n.x, -n.z}, vn, press);
+    else
+      bounceOffCarried(i, j, n, vn, press);
+    return;
+  }
   const bool elastic = tcElastic(i, j);
   const double e_n = elastic ? 1.0 : cfg_.restitution(vn);
   const double before = particleEnergy(a) + particleEnergy(b);
@@ -209,71 +208,15 @@ void EdSimulation::doPair(int i, int j, Vec2 shift) {
   ++obs_.collisions.pair;
   if (elastic) ++obs_.collisions.tc_elastic;
   if (impact_observer_) impact_observer_->pairImpact({now_, vn, b.z + shift.z + 0.5 * rz, elastic});
+  noteRattle(i, vn);
+  noteRattle(j, vn);
   noteCollision(i, j);
   noteCollision(j, i);
   if (a_rides || b_rides) settleRiders(i, j, n, {rx, rz}, press, -pairNormalSpeed(n, c.v1, c.v2));
+  sleepIfAtRest(i);
+  sleepIfAtRest(j);
   predict(i);
   predict(j);
-}
-
-// After an impact involving a rider (i's partner j; n from j to i, r = x_i - x_j): the other
-// particle comes to rest on a pressing rider or is pinched against it and joins the rigid layer;
-// otherwise a rider given a vertical impulse leaves its wall.
-void EdSimulation::settleRiders(int i, int j, Vec2 n, Vec2 r, double press, double separation) {
-  const bool pressed = press > 0.0;
-  ParticleState& a = p_[i];
-  ParticleState& b = p_[j];
-  const bool a_rides = a.motion != Motion::Ballistic, b_rides = b.motion != Motion::Ballistic;
-  const double rx = r.x, rz = r.z;
-  bool attached = false;
-  if (pressed && separation <= restSpeed(press)) {
-    // Came to rest on a pressing rider: the rider's support takes the impulse, the other
-    // particle joins the rigid layer on the wall.
-    ParticleState& rider = a_rides ? a : b;
-    const double before_rider = particleEnergy(rider);
-    rider.vz = plateAt(now_).velocity;
-    obs_.dissipated_energy += before_rider - particleEnergy(rider);
-    attached = a_rides ? attachToRider(j, a, {-rx, -rz}) : attachToRider(i, b, {rx, rz});
-  }
-  if (!attached && pressed) {
-    // A flyer pressed by a rider into another rider of the same wall is pinched between two
-    // bodies that move together: it joins them (a flyer pinched against the wall itself is
-    // caught in doWall).
-    ParticleState& rider = a_rides ? a : b;
-    const int flyer = a_rides ? j : i;
-    const Vec2 away = a_rides ? Vec2{-n.x, -n.z} : Vec2{n.x, n.z};  // rider -> flyer
-    if (pinched(flyer, away, rider.motion, a_rides ? i : j)) {
-      const double before_rider = particleEnergy(rider);
-      rider.vz = plateAt(now_).velocity;
-      obs_.dissipated_energy += before_rider - particleEnergy(rider);
-      attached = attachToRider(flyer, rider, a_rides ? Vec2{-rx, -rz} : Vec2{rx, rz});
-    }
-  }
-  if (!attached) {
-    // A collision with a vertical impulse knocks riders off their wall; one pushed into the
-    // wall hits it at once (and rests again if the wall still pushes it).
-    if (a_rides && a.vz != plateAt(now_).velocity) a.motion = Motion::Ballistic;
-    if (b_rides && b.vz != plateAt(now_).velocity) b.motion = Motion::Ballistic;
-  }
-}
-
-bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {
-  // Does a particle carried rigidly with the same wall (`rigid`) touch i on the side `away`?
-  // Then i, pushed against the wall (or another rider) from the other side, has no room to
-  // move: bouncing between two bodies that move together would repeat at one instant.
-  const ParticleState& s = p_[i];
-  const double d2 = cfg_.diameter * cfg_.diameter * (1.0 + 2e-9);
-  CellGrid::Neighbour nb[9];
-  const int m = cells_.neighbours(cells_.cellOf(i), nb);
-  for (int c = 0; c < m; ++c) {
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
-      if (j == i || j == exclude || p_[j].motion != rigid) continue;
-      const ParticleState o = extrapolated(j, now_);
-      const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
-      if (rx * rx + rz * rz <= d2 && rx * away.x + rz * away.z > 0.0) return true;
-    }
-  }
-  return false;
 }
 
 void EdSimulation::doWall(int i, WallId wall) {
@@ -321,11 +264,13 @@ void EdSimulation::doWall(int i, WallId wall) {
         0.5 * m * ((c.v.x - vw.x) * (c.v.x - vw.x) + (c.v.z - vw.z) * (c.v.z - vw.z)) +
         0.5 * inertia * c.w * c.w;
     obs_.dissipated_energy += rel_before - rel_after;
+    if (wall == kBottom) bottom_impulse_ += m * (c.v.z - s.vz);
     s.vx = c.v.x;
     s.vz = c.v.z;
     s.omega = c.w;
     ++obs_.collisions.wall;
     if (elastic) ++obs_.collisions.tc_elastic;
+    noteRattle(i, approach);
     noteCollision(i, -1);
     obs_.wall_work += particleEnergy(s) - before + (rel_before - rel_after);
   } else {
@@ -340,7 +285,9 @@ void EdSimulation::doWall(int i, WallId wall) {
     startRiding(i, wall);
   } else if (s.motion != Motion::Ballistic && (s.vz != plateAt(now_).velocity)) {
     s.motion = Motion::Ballistic;  // a rough side wall changed its vertical velocity
+    wakeRestingOn(i);
   }
+  sleepIfAtRest(i);
   predict(i);
 }
 
@@ -350,8 +297,9 @@ void EdSimulation::startRiding(int i, WallId wall) {
   const double zb = plateAt(now_).height;
   s.ride_offset = wall == kBottom ? 0.5 * cfg_.diameter : cfg_.height - 0.5 * cfg_.diameter;
   s.z = zb + s.ride_offset;
-  s.vz = plateAt(now_).velocity;
   s.motion = wall == kBottom ? Motion::RideBottom : Motion::RideLid;
+  bookBottomImpulse(s, plateAt(now_).velocity - s.vz);
+  s.vz = plateAt(now_).velocity;
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
   const double after = particleEnergy(s);
   obs_.dissipated_energy += before - after;

@@ -18,6 +18,10 @@ struct ParticleState {
   double ride_offset = 0;     // m, z - z_b(t) while riding (rigidly carried by the wall)
   std::uint32_t counter = 0;  // collisions and motion changes, for lazy invalidation
   Motion motion = Motion::Ballistic;
+  // Consecutive collisions in enduring contact (each within t_c of the previous one, slower
+  // than the sleep speed, with no flying particle below): the sleep rule (docs/physics.md,
+  // "Resting contacts", item 7).
+  std::uint16_t rattle = 0;
   // Cold: only at this particle's own collisions.
   double omega = 0;                // rad/s about y
   double last_collision = -1e300;  // s, for the TC model

@@ -116,6 +116,8 @@ void writeEngineState(h5::File& file, const std::string& group, const EngineStat
   writeColumn<double>(file, p + "burst_start", ps,
                       [](const ParticleState& q) { return q.burst_start; });
   writeColumn<std::uint64_t>(file, p + "burst", ps, [](const ParticleState& q) { return q.burst; });
+  writeColumn<std::uint64_t>(file, p + "rattle", ps,
+                             [](const ParticleState& q) { return q.rattle; });
 
   writeEvents(file, group + "/events", s.events);
   writeEvents(file, group + "/pair_events", s.pair_events);
@@ -134,6 +136,8 @@ void writeEngineState(h5::File& file, const std::string& group, const EngineStat
   file.writeAttribute(group, "next_record", s.next_record);
   file.writeAttribute(group, "virial", s.virial);
   file.writeAttribute(group, "virial_since", s.virial_since);
+  file.writeAttribute(group, "bottom_impulse", s.bottom_impulse);
+  file.writeAttribute(group, "sleeps", s.sleeps);
 }
 
 EngineState readEngineState(const h5::File& file, const std::string& group) {
@@ -169,6 +173,12 @@ EngineState readEngineState(const h5::File& file, const std::string& group) {
     q.burst_start = burst_start[i];
     q.burst = static_cast<std::uint32_t>(burst[i]);
   }
+  // Absent in states saved before the sleep rule (docs/physics.md, "Resting contacts").
+  if (file.exists(p + "rattle")) {
+    const auto rattle = readColumn<std::uint64_t>(file, p + "rattle", n);
+    for (std::size_t i = 0; i < n; ++i)
+      s.particles[i].rattle = static_cast<std::uint16_t>(rattle[i]);
+  }
 
   s.events = readEvents(file, group + "/events", n);
   // Absent in states saved before the engine kept each particle's earliest pair event.
@@ -190,6 +200,10 @@ EngineState readEngineState(const h5::File& file, const std::string& group) {
   s.next_record = file.readAttribute<double>(group, "next_record");
   s.virial = file.readAttribute<double>(group, "virial");
   s.virial_since = file.readAttribute<double>(group, "virial_since");
+  if (file.hasAttribute(group, "sleeps")) {
+    s.bottom_impulse = file.readAttribute<double>(group, "bottom_impulse");
+    s.sleeps = file.readAttribute<std::uint64_t>(group, "sleeps");
+  }
   return s;
 }
 

@@ -24,6 +24,9 @@ enum class ContactTangential { Smooth, RoughElastic, Coulomb };
 // window restarts at every collision (rolling) or at the first collision after it closed
 // (anchored).
 enum class TcWindow { Rolling, Anchored };
+// Putting particles at rest on the plate to sleep (docs/physics.md, "Resting contacts",
+// item 7): "auto" = only where the drive cannot lift the layer (no drive, or Gamma <= 1).
+enum class SleepRule { Auto, On, Off };
 // The velocity unit u of the dry law e = 1 - kappa (v_n / u)^(1/5): 1 m/s, sqrt(g d), 1 cm/s.
 enum class KappaUnits { Si, GravityDiameter, Cgs };
 
@@ -64,6 +67,7 @@ struct ContactSpec {
   ContactTangential wall_tangential = ContactTangential::Smooth;
   ContactTangential tc_tangential = ContactTangential::Smooth;
   TcWindow tc_window = TcWindow::Rolling;
+  SleepRule sleep = SleepRule::Auto;
   bool tc_enabled = true;
   std::optional<double> tc_time;  // s; empty = paper's formula ("auto")
   // Below this separation speed after a wall collision, a particle pressed on by the wall

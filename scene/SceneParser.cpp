@@ -127,6 +127,11 @@ void readTcWindow(Scene& s, const Entry& e) {
   s.contact.tc_window = e.choice<W>({{"rolling", W::Rolling}, {"anchored", W::Anchored}});
 }
 
+void readSleep(Scene& s, const Entry& e) {
+  using R = SleepRule;
+  s.contact.sleep = e.choice<R>({{"auto", R::Auto}, {"on", R::On}, {"off", R::Off}});
+}
+
 void readKappaUnits(Scene& s, const Entry& e) {
   using K = KappaUnits;
   s.contact.kappa_units = e.choice<K>({{"si", K::Si}, {"gd", K::GravityDiameter}, {"cgs", K::Cgs}});
@@ -216,6 +221,7 @@ const Field kFields[] = {
     {"contact", "tc", readTc},
     {"contact", "tc_tangential", readTcTangential},
     {"contact", "tc_window", readTcWindow},
+    {"contact", "sleep", readSleep},
     {"contact", "rest_velocity", number<kC, &CS::rest_velocity>},
     {"initial", "temperature", readTemperature},
     {"initial", "placement", readPlacement},

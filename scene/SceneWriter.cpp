@@ -108,6 +108,8 @@ void writeContact(TomlWriter& w, const ContactSpec& c, const SceneDerived& d) {
         R"(TC collisions: "smooth" | "rough-elastic" | "coulomb")");
   w.key("tc_window", quoted(c.tc_window == TcWindow::Rolling ? "rolling" : "anchored"),
         R"("rolling" | "anchored")");
+  const char* sleep[] = {"auto", "on", "off"};
+  w.key("sleep", quoted(sleep[static_cast<int>(c.sleep)]), R"("auto" | "on" | "off")");
   w.key("rest_velocity", c.rest_velocity, "m/s");
 }
 
