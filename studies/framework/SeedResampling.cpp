@@ -45,4 +45,12 @@ PercentileInterval percentileInterval(std::vector<double> values) {
   return p;
 }
 
+std::vector<int> seedsAfter(const std::vector<int>& seeds, int max_seeds) {
+  std::vector<int> out;
+  int next = seeds.empty() ? 1 : *std::max_element(seeds.begin(), seeds.end()) + 1;
+  for (std::size_t k = seeds.size(); k < static_cast<std::size_t>(max_seeds); ++k)
+    out.push_back(next++);
+  return out;
+}
+
 }  // namespace granwave

@@ -14,6 +14,10 @@ namespace granwave {
 std::vector<std::vector<std::size_t>> seedDraws(std::size_t seeds, int resamples,
                                                 std::uint64_t rng_seed);
 
+// The seeds a study adds to `seeds` when a verdict stays undecided, up to `max_seeds` in all:
+// the next integers after the largest (none if there are already max_seeds).
+std::vector<int> seedsAfter(const std::vector<int>& seeds, int max_seeds);
+
 // The median and the central 95 % interval (2.5 % and 97.5 % quantiles, linear interpolation
 // between order statistics) of a statistic over the resamples; NaN if there is none.
 struct PercentileInterval {

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "studies/framework/Measurement.hpp"
+#include "studies/framework/SeedResampling.hpp"
 #include "studies/stability/StabilityAnalysis.hpp"
 #include "studies/stability/StabilityReport.hpp"
 
@@ -52,13 +53,7 @@ void StabilityStudy::readKeys(StudyFile& f) {
   if (c_.seed_step < 1) f.fail("particles", "seed_step", "expected a positive integer");
 }
 
-std::vector<int> StabilityConfig::extraSeeds() const {
-  std::vector<int> out;
-  int next = seeds.empty() ? 1 : *std::max_element(seeds.begin(), seeds.end()) + 1;
-  for (std::size_t k = seeds.size(); k < static_cast<std::size_t>(max_seeds); ++k)
-    out.push_back(next++);
-  return out;
-}
+std::vector<int> StabilityConfig::extraSeeds() const { return seedsAfter(seeds, max_seeds); }
 
 RunRequest StabilityStudy::particleRequest(StudyFile& f, int law, double fr, double gamma,
                                            int seed) const {

@@ -12,6 +12,7 @@
 
 #include "studies/framework/InstalledFiles.hpp"
 #include "studies/framework/Measurement.hpp"
+#include "studies/framework/SeedResampling.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
 #include "studies/wave_fronts/WaveFrontsReport.hpp"
 
@@ -208,13 +209,7 @@ void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<
   push("constant e ", {"contact.restitution=\"constant\"", constant_e, seed});
 }
 
-std::vector<int> WaveFrontsConfig::extraSeeds() const {
-  std::vector<int> out;
-  int next = seeds.empty() ? 1 : *std::max_element(seeds.begin(), seeds.end()) + 1;
-  for (std::size_t k = seeds.size(); k < static_cast<std::size_t>(max_seeds); ++k)
-    out.push_back(next++);
-  return out;
-}
+std::vector<int> WaveFrontsConfig::extraSeeds() const { return seedsAfter(seeds, max_seeds); }
 
 // More seeds of a law whose simplest-model verdict is undecided, seed_step at a time.
 std::vector<RunRequest> WaveFrontsStudy::followUp(const RunSet& runs) const {

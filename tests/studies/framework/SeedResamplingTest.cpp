@@ -38,5 +38,12 @@ TEST(SeedResampling, PercentilesInterpolateBetweenOrderStatistics) {
   EXPECT_TRUE(std::isnan(percentileInterval({NAN}).median));
 }
 
+TEST(SeedResampling, SeedsAreAddedAfterTheLargestUpToTheCap) {
+  EXPECT_EQ(seedsAfter({1, 2, 3}, 5), (std::vector<int>{4, 5}));
+  EXPECT_EQ(seedsAfter({11, 3}, 4), (std::vector<int>{12, 13}));
+  EXPECT_TRUE(seedsAfter({1, 2, 3}, 3).empty());
+  EXPECT_EQ(seedsAfter({}, 2), (std::vector<int>{1, 2}));
+}
+
 }  // namespace
 }  // namespace granwave
