@@ -210,9 +210,10 @@ class EdSimulation {
   Contacts contactsOf(int k) const;
   void moveTogether(int k);
   void sleepIfAtRest(int k);
-  // Asleep: carried by the bottom with no motion of its own (fallAsleep).
-  static bool asleep(const ParticleState& s) {
-    return s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
+  // Asleep: carried by the bottom with no motion of its own (fallAsleep). Only with the rule
+  // on: a rider that merely has no horizontal motion or spin is not asleep.
+  bool asleep(const ParticleState& s) const {
+    return cfg_.sleep && s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
   }
   // Flyer f hits carried particle r slowly; n from r to f, press: riderPress of r on f.
   void bounceOffCarried(int f, int r, Vec2 n, double v_n, double press);

@@ -59,9 +59,8 @@ EngineConfig engineConfig(const Scene& scene) {
   // item 7). Where the plate never pulls away from the layer (Gamma <= 1, or no drive) a resting
   // layer stays at rest, and that is exact; on a layer that flies it changes the dynamics
   // measurably (the paper's wet scene), so "auto" leaves it off there.
-  const double gamma = dv.amplitude * dv.omega * dv.omega / scene.run.gravity;
   c.sleep = scene.contact.sleep == SleepRule::On ||
-            (scene.contact.sleep == SleepRule::Auto && (!dv.driven || gamma <= 1.0 + 1e-12));
+            (scene.contact.sleep == SleepRule::Auto && (!dv.driven || dv.gamma <= 1.0 + 1e-12));
   c.rest_velocity = scene.contact.rest_velocity;
   c.duration = scene.run.duration;
   if (dv.driven) {

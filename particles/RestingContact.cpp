@@ -17,7 +17,7 @@
 namespace granwave {
 
 void EdSimulation::noteRattle(int k, double v_n) {
-  if (cfg_.tc <= 0.0) return;
+  if (cfg_.tc <= 0.0 || !cfg_.sleep) return;  // streaks serve the sleep rule alone
   ParticleState& s = p_[k];
   // A collision counts when it is enduring: it follows k's previous one within t_c, so the
   // TC model makes it elastic on k's account. A flying particle's collision faster than the
@@ -91,7 +91,7 @@ void EdSimulation::moveTogether(int k) {
   // The group: every flying particle connected to k through touching flying particles;
   // held if one of them touches the bottom, a side wall or a carried particle.
   std::vector<int> group{k};
-  in_group_.assign(p_.size(), 0);
+  in_group_.resize(p_.size(), 0);  // all 0 between calls: only members are set, and reset below
   in_group_[k] = 1;
   bool held = false;
   for (std::size_t g = 0; g < group.size(); ++g) {
@@ -128,6 +128,7 @@ void EdSimulation::moveTogether(int k) {
   vz = held ? plateAt(now_).velocity : vz / static_cast<double>(group.size());
   double after = 0;
   for (int j : group) {
+    in_group_[j] = 0;
     p_[j].vx = vx;
     p_[j].vz = vz;
     p_[j].rattle = 0;
