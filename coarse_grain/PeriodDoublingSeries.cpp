@@ -91,8 +91,7 @@ F2Window f2Window(const double* window, int K, int M, double floor) {
   return w;
 }
 
-void wilsonInterval(double p, double n, double& low, double& high) {
-  constexpr double z = 1.959963984540054;  // two-sided 95 %
+void wilsonInterval(double p, double n, double& low, double& high, double z) {
   const double z2n = z * z / n;
   const double centre = (p + 0.5 * z2n) / (1 + z2n);
   const double half = z * std::sqrt(p * (1 - p) / n + 0.25 * z2n / n) / (1 + z2n);

@@ -95,6 +95,19 @@ struct FailureMap {
   int hydro_failures = 0;
 };
 
+// Whether a candidate reproduces the reference (docs/studies.md, "The simplest model that
+// reproduces the particles"): `no` when its front speed or its time share differs beyond
+// 3 sigma, `yes` when both 95 % intervals of the difference lie within the study's
+// tolerances, otherwise `not_yet` (more seeds can decide it) or, for a deterministic (hydro)
+// candidate whose own front error alone is wider than the tolerance, `cannot_tell`.
+enum class Match { yes, no, not_yet, cannot_tell };
+std::string matchText(Match m);
+// The two tests (WaveFrontsMethods.cpp): front speeds against a relative tolerance, time
+// shares against an absolute one.
+Match frontMatch(const Measurement& candidate, const Measurement& reference, double tolerance,
+                 bool deterministic);
+Match shareMatch(const StateShare& candidate, const StateShare& reference, double tolerance);
+
 struct ModelCandidate {
   std::string description, key;
   bool failed = false;  // every seed, or the hydro run
@@ -103,17 +116,17 @@ struct ModelCandidate {
   std::string periods;
   StateShare share;           // time in the period-2 state (hydro: exact from its period)
   ShareDifference share_gap;  // share - the reference's, with its 95 % interval
-  double sigma = NAN;
-  bool reproduces = false, powerless = false;
+  double sigma = NAN;         // front speed - the reference's, in combined sigma
+  Match match = Match::no;
 };
 
 // How stable a verdict is against the choice of seeds (docs/studies.md, "Verdict
-// stability"): the share of bootstrap resamples of the seeds (same number, drawn with
-// replacement) that give the same verdict as all seeds. Decided when that share reaches
-// the study's [verdicts] agreement; otherwise seeds are added up to [particles] max_seeds,
-// and a verdict still short of it is reported as undecided.
+// stability"). Decided unless a candidate before the first that reproduces is `not_yet`
+// (then seeds are added up to [particles] max_seeds, and a verdict still open is
+// "undecided"); beside it, the share of bootstrap resamples of the seeds (same number,
+// drawn with replacement) that give the same verdict as all seeds.
 struct VerdictStability {
-  std::string verdict;  // the full set's ("none" if no candidate reproduces)
+  std::string verdict;  // the full set's: a candidate, "none" or "undecided"
   double agreement = NAN;
   int seeds = 0, resamples = 0;
   bool decided = false;
@@ -126,7 +139,9 @@ struct ModelHierarchy {
   int reference_period = 0;
   StateShare reference_share;
   std::vector<ModelCandidate> candidates;
-  std::string simplest;  // empty: none reproduces the particles
+  std::string simplest;    // empty: none reproduces the particles (or undecided)
+  bool undecided = false;  // a candidate before `simplest` (or any, if none) is not_yet
+  double front_tolerance = NAN, share_tolerance = NAN;  // the study's, judged with
   VerdictStability stability;
 };
 

@@ -74,14 +74,17 @@ void WaveFrontsStudy::readKeys(StudyFile& f) {
   c_.seeds = f.integers("particles", "seeds", c_.seeds);
   c_.max_seeds = f.integer("particles", "max_seeds", c_.max_seeds);
   c_.seed_step = f.integer("particles", "seed_step", c_.seed_step);
-  c_.agreement = f.number("verdicts", "agreement", c_.agreement);
+  c_.front_tolerance = f.number("verdicts", "front_tolerance", c_.front_tolerance);
+  c_.share_tolerance = f.number("verdicts", "share_tolerance", c_.share_tolerance);
   c_.resamples = f.integer("verdicts", "resamples", c_.resamples);
   if (c_.seeds.empty()) f.fail("particles", "seeds", "expected at least one seed");
   if (c_.max_seeds < static_cast<int>(c_.seeds.size()) || c_.max_seeds > 1000)
     f.fail("particles", "max_seeds", "expected from the number of seeds listed up to 1000");
   if (c_.seed_step < 1) f.fail("particles", "seed_step", "expected 1 or more seeds per round");
-  if (!(c_.agreement > 0.5 && c_.agreement <= 1))
-    f.fail("verdicts", "agreement", "expected a share in (0.5, 1]");
+  if (!(c_.front_tolerance > 0 && c_.front_tolerance < 1))
+    f.fail("verdicts", "front_tolerance", "expected a fraction of the front speed in (0, 1)");
+  if (!(c_.share_tolerance > 0 && c_.share_tolerance < 1))
+    f.fail("verdicts", "share_tolerance", "expected a difference of time shares in (0, 1)");
   if (c_.resamples < 20 || c_.resamples > 100000)
     f.fail("verdicts", "resamples", "expected 20 to 100000 bootstrap resamples");
   c_.window = f.integer("particles", "window_cycles", c_.window);

@@ -25,8 +25,8 @@ std::vector<int> seedsOf(const WaveFrontsConfig& c, const RunSet& runs, int law)
 
 VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInputs& in, int law) {
   auto verdict = [&](const std::vector<int>& pick) {
-    const std::string s = judgeModels(c, in, law, pick).simplest;
-    return s.empty() ? std::string("none") : s;
+    const ModelHierarchy m = judgeModels(c, in, law, pick);
+    return m.undecided ? std::string("undecided") : m.simplest.empty() ? "none" : m.simplest;
   };
   const int n = static_cast<int>(in.seeds.size());
   std::vector<int> all(static_cast<std::size_t>(n));
@@ -44,7 +44,7 @@ VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInp
     same += s == v.verdict;
   }
   v.agreement = static_cast<double>(same) / c.resamples;
-  v.decided = v.agreement >= c.agreement;
+  v.decided = v.verdict != "undecided";
   return v;
 }
 
