@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "coarse_grain/PeriodDoublingSeries.hpp"
 #include "studies/framework/SeedResampling.hpp"
@@ -36,14 +37,12 @@ VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInp
   v.seeds = n;
   v.resamples = c.resamples;
   // The same resamples on every build (SeedResampling.hpp).
-  int same = 0;
-  for (const auto& draw : seedDraws(static_cast<std::size_t>(n), c.resamples, 20261202)) {
-    const std::vector<int> pick(draw.begin(), draw.end());
-    const std::string s = verdict(pick);
-    v.shares[s] += 1.0 / c.resamples;
-    same += s == v.verdict;
-  }
-  v.agreement = static_cast<double>(same) / c.resamples;
+  std::map<std::string, int> count;
+  for (const auto& draw : seedDraws(static_cast<std::size_t>(n), c.resamples, 20261202))
+    ++count[verdict(std::vector<int>(draw.begin(), draw.end()))];
+  // Counts divided once, so that the agreement and the verdict's own share are one number.
+  for (const auto& [s, k] : count) v.shares[s] = static_cast<double>(k) / c.resamples;
+  v.agreement = count.count(v.verdict) ? v.shares[v.verdict] : 0.0;
   v.decided = v.verdict != "undecided";
   return v;
 }
