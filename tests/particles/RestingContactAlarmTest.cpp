@@ -130,23 +130,32 @@ TEST(RestingContactAlarm, AlarmRestartsBitIdenticallyThroughTheArchive) {
   }
 }
 
-// The wet stability-grid runs (150 cycles each) that the collapse detector stopped with the
-// default settings before the alarm, run just past their stopping time: 10 Hz, Gamma = 2,
-// seeds 1 and 3 (stopped at t = 3.109 and 2.801 s), and 15 Hz, Gamma = 5, seed 5 (2.934 s);
-// and 10 Hz, Gamma = 2, seed 2, which the alarm alone, without the inelastic group collision
-// of a particle that still rattles with the rule on, stopped at 3.285 s.
+namespace {
+
+// A wet stability-grid point (150 cycles each), run to `duration` with the default settings.
+struct GridPoint {
+  std::string frequency, gamma, seed, duration;
+};
+
+void expectFinishesWithTheAlarm(const GridPoint& p) {
+  const Scene s = paperFile("wet", {"drive.frequency=" + p.frequency, "drive.gamma=" + p.gamma,
+                                    "run.seed=" + p.seed, "run.duration=" + p.duration});
+  const std::string point = p.frequency + " Hz, Gamma " + p.gamma + ", seed " + p.seed;
+  EdSimulation sim = simulationOf(engineConfig(s), s);
+  EXPECT_NO_THROW(sim.run()) << point;
+  EXPECT_NEAR(sim.now(), s.run.duration, 1e-9) << point;
+  EXPECT_GT(sim.sleepAlarmTime(), 0.0) << point;
+}
+
+}  // namespace
+
+// The runs the collapse detector stopped with the default settings before the alarm, run
+// just past their stopping time: 10 Hz, Gamma = 2, seeds 1 and 3 (stopped at t = 3.109 and
+// 2.801 s), and 15 Hz, Gamma = 5, seed 5 (2.934 s); and 10 Hz, Gamma = 2, seed 2, which the
+// alarm alone, without the inelastic group collision of a particle that still rattles with
+// the rule on, stopped at 3.285 s.
 TEST(RestingContactAlarm, WetGridRunsTheDetectorStoppedFinishWithTheDefault) {
-  struct Point {
-    std::string frequency, gamma, seed, duration;
-  };
-  for (const Point& p : {Point{"10", "2", "1", "3.2"}, Point{"10", "2", "3", "2.9"},
-                         Point{"15", "5", "5", "3.0"}, Point{"10", "2", "2", "3.3"}}) {
-    const Scene s = paperFile("wet", {"drive.frequency=" + p.frequency, "drive.gamma=" + p.gamma,
-                                      "run.seed=" + p.seed, "run.duration=" + p.duration});
-    const std::string point = p.frequency + " Hz, Gamma " + p.gamma + ", seed " + p.seed;
-    EdSimulation sim = simulationOf(engineConfig(s), s);
-    EXPECT_NO_THROW(sim.run()) << point;
-    EXPECT_NEAR(sim.now(), s.run.duration, 1e-9) << point;
-    EXPECT_GT(sim.sleepAlarmTime(), 0.0) << point;
-  }
+  for (const GridPoint& p : {GridPoint{"10", "2", "1", "3.2"}, GridPoint{"10", "2", "3", "2.9"},
+                             GridPoint{"15", "5", "5", "3.0"}, GridPoint{"10", "2", "2", "3.3"}})
+    expectFinishesWithTheAlarm(p);
 }
