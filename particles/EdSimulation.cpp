@@ -104,6 +104,7 @@ EdSimulation::EdSimulation(const EngineConfig& config, const EngineState& saved)
   virial_since_ = saved.virial_since;
   bottom_impulse_ = saved.bottom_impulse;
   sleeps_ = saved.sleeps;
+  sleep_alarm_time_ = saved.sleep_alarm_time;
 }
 
 EngineState EdSimulation::state() const {
@@ -121,6 +122,7 @@ EngineState EdSimulation::state() const {
   s.virial_since = virial_since_;
   s.bottom_impulse = bottom_impulse_;
   s.sleeps = sleeps_;
+  s.sleep_alarm_time = sleep_alarm_time_;
   return s;
 }
 

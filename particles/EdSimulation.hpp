@@ -52,6 +52,10 @@ struct EngineConfig {
   TcWindowRule tc_window = TcWindowRule::Rolling;
   double tc = 0;       // s; 0 = TC model off
   bool sleep = false;  // put particles at rest on the bottom to sleep (RestingContact.cpp)
+  // A particle with this many enduring collisions in a row (each within t_c of the previous
+  // one) switches the rule on for the rest of the run if it is off; with it on, its contact
+  // group collides perfectly inelastically (RestingContact.cpp). 0 = neither.
+  std::uint32_t sleep_alarm = 0;
   double rest_velocity = 1e-6;
   double duration = 1;  // s
   double record_interval = 0.01;
@@ -65,6 +69,11 @@ struct EngineConfig {
   double max_event_rate = 0;  // events per simulated second, whole system
   double max_event_rate_grace = 0;
 };
+
+// contact.sleep = "auto" or "on": the enduring collisions in a row that switch the sleep rule
+// on, or end a rattle it did not (EngineConfig::sleep_alarm; docs/physics.md, "Resting
+// contacts", item 7).
+inline constexpr std::uint32_t kAutoSleepAlarm = 500;
 
 EngineConfig engineConfig(const Scene& scene);
 
@@ -122,6 +131,9 @@ class EdSimulation {
   double bottomImpulse() const;
   // Particles put to sleep so far (docs/physics.md, "Resting contacts", item 7).
   std::uint64_t sleeps() const { return sleeps_; }
+  // When the sleep rule's alarm switched it on (EngineConfig::sleep_alarm), s; negative if it
+  // did not.
+  double sleepAlarmTime() const { return sleep_alarm_time_; }
 
  private:
   void setUp(int particles);
@@ -210,10 +222,12 @@ class EdSimulation {
   Contacts contactsOf(int k) const;
   void moveTogether(int k);
   void sleepIfAtRest(int k);
+  // The rule is on from the start (EngineConfig::sleep) or since its alarm.
+  bool sleepOn() const { return cfg_.sleep || sleep_alarm_time_ >= 0.0; }
   // Asleep: carried by the bottom with no motion of its own (fallAsleep). Only with the rule
   // on: a rider that merely has no horizontal motion or spin is not asleep.
   bool asleep(const ParticleState& s) const {
-    return cfg_.sleep && s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
+    return sleepOn() && s.motion == Motion::RideBottom && s.vx == 0.0 && s.omega == 0.0;
   }
   // Flyer f hits carried particle r slowly; n from r to f, press: riderPress of r on f.
   void bounceOffCarried(int f, int r, Vec2 n, double v_n, double press);
@@ -264,7 +278,8 @@ class EdSimulation {
   double virial_since_ = 0;
   double bottom_impulse_ = 0;  // N s, to the particles' own times (bottomImpulse)
   std::uint64_t sleeps_ = 0;
-  std::vector<char> in_group_;  // moveTogether's scratch: members of the group
+  double sleep_alarm_time_ = -1.0;  // s; negative: the alarm has not switched the rule on
+  std::vector<char> in_group_;      // moveTogether's scratch: members of the group
   bool rotation_ = false;
   mutable PlateState plate_;  // plateAt's memory
   mutable double plate_time_ = std::numeric_limits<double>::quiet_NaN();

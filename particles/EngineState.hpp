@@ -33,6 +33,9 @@ struct EngineState {
   // bottomImpulse) and the number of particles put to sleep; 0 in states saved before.
   double bottom_impulse = 0;
   std::uint64_t sleeps = 0;
+  // When the sleep rule's alarm switched it on (s); negative if it did not, or in states
+  // saved before the alarm existed.
+  double sleep_alarm_time = -1.0;
 };
 
 }  // namespace granwave

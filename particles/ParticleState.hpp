@@ -27,6 +27,10 @@ struct ParticleState {
   double last_collision = -1e300;  // s, for the TC model
   double burst_start = -1e300;     // collapse detection window
   std::uint32_t burst = 0;         // collisions in the current window
+  // Collisions in a row, each within t_c of the previous one (the TC model's enduring
+  // contact), counted while the sleep rule waits for its alarm (docs/physics.md, "Resting
+  // contacts", item 7).
+  std::uint32_t enduring = 0;
 };
 
 // Initial condition handed to the engine (lab frame, t = 0).

@@ -118,6 +118,8 @@ void writeEngineState(h5::File& file, const std::string& group, const EngineStat
   writeColumn<std::uint64_t>(file, p + "burst", ps, [](const ParticleState& q) { return q.burst; });
   writeColumn<std::uint64_t>(file, p + "rattle", ps,
                              [](const ParticleState& q) { return q.rattle; });
+  writeColumn<std::uint64_t>(file, p + "enduring", ps,
+                             [](const ParticleState& q) { return q.enduring; });
 
   writeEvents(file, group + "/events", s.events);
   writeEvents(file, group + "/pair_events", s.pair_events);
@@ -138,6 +140,7 @@ void writeEngineState(h5::File& file, const std::string& group, const EngineStat
   file.writeAttribute(group, "virial_since", s.virial_since);
   file.writeAttribute(group, "bottom_impulse", s.bottom_impulse);
   file.writeAttribute(group, "sleeps", s.sleeps);
+  file.writeAttribute(group, "sleep_alarm_time", s.sleep_alarm_time);
 }
 
 EngineState readEngineState(const h5::File& file, const std::string& group) {
@@ -179,6 +182,12 @@ EngineState readEngineState(const h5::File& file, const std::string& group) {
     for (std::size_t i = 0; i < n; ++i)
       s.particles[i].rattle = static_cast<std::uint16_t>(rattle[i]);
   }
+  // Absent in states saved before the sleep rule's alarm.
+  if (file.exists(p + "enduring")) {
+    const auto enduring = readColumn<std::uint64_t>(file, p + "enduring", n);
+    for (std::size_t i = 0; i < n; ++i)
+      s.particles[i].enduring = static_cast<std::uint32_t>(enduring[i]);
+  }
 
   s.events = readEvents(file, group + "/events", n);
   // Absent in states saved before the engine kept each particle's earliest pair event.
@@ -204,6 +213,8 @@ EngineState readEngineState(const h5::File& file, const std::string& group) {
     s.bottom_impulse = file.readAttribute<double>(group, "bottom_impulse");
     s.sleeps = file.readAttribute<std::uint64_t>(group, "sleeps");
   }
+  if (file.hasAttribute(group, "sleep_alarm_time"))
+    s.sleep_alarm_time = file.readAttribute<double>(group, "sleep_alarm_time");
   return s;
 }
 

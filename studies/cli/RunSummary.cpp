@@ -80,6 +80,11 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
                      s.drive.frequency, dv.gamma, dv.amplitude, dv.v0);
   r += fmt::format("TC model        {}\n",
                    in.tc > 0 ? fmt::format("t_c = {:.3g} s", in.tc) : std::string("off"));
+  if (in.sleep_alarm_time >= 0)
+    r += fmt::format(
+        "sleep rule      switched on at t = {:.6f} s: a particle rattled in enduring "
+        "contact (docs/physics.md, \"Resting contacts\", item 7)\n",
+        in.sleep_alarm_time);
   r += fmt::format("simulated       {:.4g} s{}\n", in.simulated,
                    in.completed ? "" : " (interrupted)");
   if (include_timing) {

@@ -17,6 +17,8 @@ struct RunSummaryInput {
   double simulated = 0;   // s
   double wall = 0;        // s
   double tc = 0;          // s
+  // When the sleep rule's alarm switched it on (s; negative: it did not).
+  double sleep_alarm_time = -1;
   bool completed = true;
   std::vector<double> com_height;   // one per record (driven: M per cycle)
   double energy_balance_error = 0;  // J, |E - E0 - W + D|

@@ -282,6 +282,7 @@ class SimulationRun {
     in.simulated = status.time;
     in.wall = loaded_.ledger.wall_seconds + secondsSince(t0_);
     in.tc = config_.tc;
+    in.sleep_alarm_time = sim_->sleepAlarmTime();
     in.completed = status.completed;
     in.com_height = std::move(com_.height);
     in.initial_energy = initial_energy_;
