@@ -46,8 +46,8 @@ PointDraws allSeeds(const SeedPatterns& s);
 StabilityGrid revoteGrid(const StabilityGrid& frame, const SeedPatterns& s, const PointDraws& draws,
                          std::size_t r);
 
-// The share of resamples from which a verdict counts as decided (the wave-fronts study's
-// [verdicts] agreement default; docs/studies.md, "Verdict stability").
+// The share of resamples from which a stability feature counts as decided (docs/studies.md,
+// "Stability over seeds").
 inline constexpr double kDecidedAgreement = 0.9;
 
 struct SeedBootstrap {

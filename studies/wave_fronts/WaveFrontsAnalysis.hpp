@@ -96,10 +96,10 @@ struct FailureMap {
 };
 
 // Whether a candidate reproduces the reference (docs/studies.md, "The simplest model that
-// reproduces the particles"): `no` when its front speed or its time share differs beyond
-// 3 sigma, `yes` when both 95 % intervals of the difference lie within the study's
-// tolerances, otherwise `not_yet` (more seeds can decide it) or, for a deterministic (hydro)
-// candidate whose own front error alone is wider than the tolerance, `cannot_tell`.
+// reproduces the particles"): `yes` when the 95 % intervals of its front speed's and its time
+// share's differences lie within the study's tolerances, `no` when either lies wholly outside,
+// otherwise `not_yet` (more seeds can decide it) or, for a deterministic (hydro) candidate
+// whose own front error alone keeps the interval across the tolerance's edge, `cannot_tell`.
 enum class Match { yes, no, not_yet, cannot_tell };
 std::string matchText(Match m);
 // The two tests (WaveFrontsMethods.cpp): front speeds against a relative tolerance, time

@@ -131,8 +131,8 @@ std::string verdictText(const VerdictStability& v) {
                     share < 0.01 ? std::string("< 1 %") : fmt::format("{:.0f} %", 100 * share));
   if (!v.decided)
     return fmt::format(
-        "undecided at {} seeds: a simpler candidate is neither 3 sigma off nor within the "
-        "tolerances (bootstrap resamples of the seeds: {})",
+        "undecided at {} seeds: the interval of a simpler candidate still crosses a "
+        "tolerance's edge (bootstrap resamples of the seeds: {})",
         v.seeds, alternatives);
   const std::string said = v.verdict == "none" ? "no simpler model reproduces the particles"
                                                : "simplest model that reproduces it: " + v.verdict;
@@ -228,13 +228,15 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
           "windows; a hydro run is deterministic: its share is 0 for period 1, 1 for period 2, "
           "unknown otherwise). The share, not the period of each run, is compared, because a "
           "bistable layer's period is a draw from its states that round-off alone changes. A "
-          "candidate does not reproduce the reference if either differs by more than 3 sigma; it "
-          "reproduces it if the 95 % intervals of both differences lie within the study's "
-          "tolerances ({}); otherwise it is open, and seeds are added (the full and the simpler "
+          "candidate reproduces the reference if the 95 % intervals of both differences lie "
+          "within the study's tolerances ({}), and does not if either lies wholly outside; "
+          "otherwise it is open, and seeds are added (the full and the simpler "
           "particle models) up to [particles] max_seeds. The verdict is the first candidate that "
           "reproduces; it is undecided while a simpler one is open. A hydro candidate whose own "
-          "front error alone is wider than the tolerance cannot be told by any number of seeds and "
-          "is passed over. Beside each verdict: the share of bootstrap resamples of the seeds that "
+          "front error alone keeps its interval across the tolerance's edge cannot be told by any "
+          "number of seeds and is passed over (the table marks it: the verdict is then the "
+          "simplest among the candidates that could be told). Beside each verdict: the share of "
+          "bootstrap resamples of the seeds that "
           "give it (docs/studies.md, \"Verdict stability\").",
           fmt::format("front speed within {:.0f} % of the reference's, time share within {:.2f}",
                       100 * config.front_tolerance, config.share_tolerance)));

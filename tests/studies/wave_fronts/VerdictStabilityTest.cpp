@@ -79,13 +79,24 @@ TEST(VerdictStability, ACandidateStuckInOneStateDoesNotReproduceABistableLayer) 
   EXPECT_DOUBLE_EQ(v.agreement, 1.0);
 }
 
-TEST(VerdictStability, AFrontSpeedMoreThanThreeSigmaOffDoesNotReproduce) {
-  // 1.2 against 1.0, each 0.05 per seed over 3 seeds: 0.2 / 0.041 = 4.9 sigma.
+TEST(VerdictStability, AFrontSpeedWhoseIntervalLiesBeyondTheToleranceDoesNotReproduce) {
+  // 1.3 against 1.0, each 0.05 per seed over 3 seeds: combined sigma 0.041, the difference's
+  // 95 % interval 0.22-0.38 lies wholly above 15 % of 1.0.
   const ModelInputs in =
-      inputs(repeated(seedRun(1, 0, 25), 3), repeated(seedRun(1, 0, 25, 1.2), 3));
+      inputs(repeated(seedRun(1, 0, 25), 3), repeated(seedRun(1, 0, 25, 1.3), 3));
   const ModelHierarchy m = judgeModels(config(), in, 1, {0, 1, 2});
   EXPECT_EQ(m.candidates[4].match, Match::no);
   EXPECT_EQ(modelVerdictStability(config(), in, 1).verdict, "none");
+}
+
+TEST(VerdictStability, ARealDifferenceWithinTheToleranceReproduces) {
+  // 1.05 against 1.0 with 0.005 per seed: 12 sigma apart, a real difference, but its 95 %
+  // interval (0.042-0.058) lies within 15 %: to the accuracy asked, the candidate reproduces.
+  // A rule that failed every difference beyond 3 sigma would reject it, and with enough seeds
+  // any candidate but the full model itself.
+  const ModelInputs in = inputs(repeated(seedRun(1, 0, 25, 1.0, 0.005), 3),
+                                repeated(seedRun(1, 0, 25, 1.05, 0.005), 3));
+  EXPECT_EQ(modelVerdictStability(config(), in, 1).verdict, kConstantE);
 }
 
 TEST(VerdictStability, AnEqualCandidateStaysOpenUntilSeedsNarrowTheIntervalInsideTheTolerance) {
@@ -113,11 +124,16 @@ TEST(VerdictStability, ADeterministicCandidateTooImpreciseForTheToleranceCannotB
   EXPECT_EQ(frontMatch({1.0, 0.2}, {1.0, 0.01}, 0.15, false), Match::not_yet);
   EXPECT_EQ(frontMatch({1.0, 0.05}, {1.0, 0.01}, 0.15, true), Match::yes);
   EXPECT_EQ(frontMatch({1.7, 0.2}, {1.0, 0.01}, 0.15, true), Match::no);
+  // Without a front of its own a candidate cannot reproduce one; without the reference's,
+  // nothing is decided yet.
+  EXPECT_EQ(frontMatch({}, {1.0, 0.01}, 0.15, true), Match::no);
+  EXPECT_EQ(frontMatch({1.0, 0.01}, {}, 0.15, false), Match::not_yet);
 }
 
 TEST(VerdictStability, TheBootstrapShareIsReportedBesideADecidedVerdict) {
   // Seed 1 of the reference is period 2 throughout, seeds 2 and 3 never; the candidate never.
-  // All seeds: 25 of 75 windows against 0 of 75, more than 3 sigma apart: "none", decided. A
+  // All seeds: 25 of 75 windows against 0 of 75, the difference's 95 % interval -0.45 to
+  // -0.22, wholly beyond -0.2: "none", decided. A
   // resample without seed 1 (probability (2/3)^3 = 8/27) has the reference at 0 too and names
   // the candidate, so 19/27 = 0.70 of resamples agree. Binomial sd over 200 resamples 0.032:
   // 4 sd = 0.13.
