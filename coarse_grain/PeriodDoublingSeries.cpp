@@ -91,7 +91,8 @@ F2Window f2Window(const double* window, int K, int M, double floor) {
   return w;
 }
 
-void wilsonInterval(double p, double n, double& low, double& high, double z) {
+void wilsonInterval(double p, double n, double& low, double& high) {
+  constexpr double z = kZ95;
   const double z2n = z * z / n;
   const double centre = (p + 0.5 * z2n) / (1 + z2n);
   const double half = z * std::sqrt(p * (1 - p) / n + 0.25 * z2n / n) / (1 + z2n);

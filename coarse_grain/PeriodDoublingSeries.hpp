@@ -75,9 +75,9 @@ PeriodDoublingSeries periodDoublingSeries(const std::vector<double>& com_height,
                                           int samples_per_cycle, int discard_cycles,
                                           int window_cycles = 12, double floor = 0.1);
 
-// Wilson's score interval for a share p of n (n > 0, not necessarily whole) trials, two-sided
-// at z standard normal deviates (1.96: 95 %).
+// The standard normal deviate of a two-sided 95 % interval.
 constexpr double kZ95 = 1.959963984540054;
-void wilsonInterval(double p, double n, double& low, double& high, double z = kZ95);
+// Wilson's 95 % score interval for a share p of n (n > 0, not necessarily whole) trials.
+void wilsonInterval(double p, double n, double& low, double& high);
 
 }  // namespace granwave

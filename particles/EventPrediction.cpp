@@ -284,13 +284,18 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
   // needs the round-off tolerance), take the general path.
   const double g = cfg_.gravity, d = cfg_.diameter, t0 = now_;
   const bool flyer = s.motion == Motion::Ballistic;
+  double speed_i = -1.0;  // |v_i|, computed once, and only if the general path needs it
+  auto speed = [&] {
+    if (speed_i < 0.0) speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
+    return speed_i;
+  };
   for (int c = 0; c < m; ++c) {
     const double shift_x = nb[c].shift_x, shift_z = nb[c].shift_z;
     for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
       if (j == i) continue;
       const ParticleState& q = p_[j];
       if (!flyer || q.motion != Motion::Ballistic) {
-        predictPairWith(i, s, std::sqrt(s.vx * s.vx + s.vz * s.vz), j, nb[c], best);
+        predictPairWith(i, s, speed(), j, nb[c], best);
         continue;
       }
       const double dt = t0 - q.t;
@@ -300,7 +305,7 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
       if (rx * vx + rz * vz >= 0.0) continue;  // receding: never (pairCollisionTime)
       const double tau = pairCollisionTime(rx, rz, vx, vz, d);
       if (tau == 0.0) {
-        predictPairWith(i, s, std::sqrt(s.vx * s.vx + s.vz * s.vz), j, nb[c], best);
+        predictPairWith(i, s, speed(), j, nb[c], best);
         continue;
       }
       if (t0 + tau < best.time) best = {t0 + tau, EventKind::Pair, j, q.counter};

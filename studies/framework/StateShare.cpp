@@ -23,27 +23,14 @@ StateShare exactStateShare(int period) {
   return s;
 }
 
-namespace {
-// A share's Wilson interval at z: none for an exact share, the stored one at 95 %.
-void interval(const StateShare& s, double z, double& low, double& high) {
-  low = s.low;
-  high = s.high;
-  if (s.effective_windows > 0 && z != kZ95)
-    wilsonInterval(s.share, s.effective_windows, low, high, z);
-}
-}  // namespace
-
-ShareDifference shareDifference(const StateShare& a, const StateShare& b, double z) {
+ShareDifference shareDifference(const StateShare& a, const StateShare& b) {
   ShareDifference d;
   if (!a.known() || !b.known()) return d;
   d.difference = a.share - b.share;
-  double a_low, a_high, b_low, b_high;
-  interval(a, z, a_low, a_high);
-  interval(b, z, b_low, b_high);
   // Newcombe (1998), eq. for method 10: each side of the interval adds the two Wilson
   // half-widths on the sides that move the difference that way, in quadrature.
-  d.low = d.difference - std::hypot(a.share - a_low, b_high - b.share);
-  d.high = d.difference + std::hypot(a_high - a.share, b.share - b_low);
+  d.low = d.difference - std::hypot(a.share - a.low, b.high - b.share);
+  d.high = d.difference + std::hypot(a.high - a.share, b.share - b.low);
   return d;
 }
 

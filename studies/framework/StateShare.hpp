@@ -7,8 +7,6 @@
 
 #include <cmath>
 
-#include "coarse_grain/PeriodDoublingSeries.hpp"  // kZ95
-
 namespace granwave {
 
 struct StateShare {
@@ -25,13 +23,13 @@ StateShare pooledStateShare(int windows, int period2_windows, double effective_w
 // classify.
 StateShare exactStateShare(int period);
 
-// The interval of a - b by Newcombe's hybrid score method (method 10 of R. G. Newcombe,
-// Statistics in Medicine 17, 873 (1998)), built from the two Wilson intervals at z standard
-// normal deviates (1.96: 95 %; 3: 99.73 %); an exact share contributes no width.
+// The 95 % interval of a - b by Newcombe's hybrid score method (method 10 of R. G. Newcombe,
+// Statistics in Medicine 17, 873 (1998)), built from the two Wilson intervals; an exact share
+// contributes no width.
 struct ShareDifference {
   double difference = NAN, low = NAN, high = NAN;
   bool compatible() const { return low <= 0 && 0 <= high; }  // false if either is unknown
 };
-ShareDifference shareDifference(const StateShare& a, const StateShare& b, double z = kZ95);
+ShareDifference shareDifference(const StateShare& a, const StateShare& b);
 
 }  // namespace granwave

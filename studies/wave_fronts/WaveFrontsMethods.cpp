@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 
+#include "coarse_grain/PeriodDoublingSeries.hpp"  // kZ95
 #include "studies/framework/FailureReason.hpp"
 #include "studies/framework/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <numeric>
 #include <sstream>
 
 #include "studies/framework/InstalledFiles.hpp"
@@ -220,7 +221,11 @@ std::vector<RunRequest> WaveFrontsStudy::followUp(const RunSet& runs) const {
   for (int law = 0; law < kLaws; ++law) {
     const std::size_t have = seedsOf(c_, runs, law).size();
     if (have >= static_cast<std::size_t>(c_.max_seeds)) continue;
-    if (modelVerdictStability(c_, readModelInputs(c_, runs, law), law).decided) continue;
+    // Decided or not is the verdict of all seeds; the bootstrap beside it is for the report.
+    const ModelInputs in = readModelInputs(c_, runs, law);
+    std::vector<int> all(in.seeds.size());
+    std::iota(all.begin(), all.end(), 0);
+    if (!judgeModels(c_, in, law, all).undecided) continue;
     const std::size_t from = 3 * (have - c_.seeds.size());
     const std::size_t to = std::min(extra_[law].size(), from + 3 * c_.seed_step);
     more.insert(more.end(), extra_[law].begin() + static_cast<long>(from),

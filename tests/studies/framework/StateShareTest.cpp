@@ -49,17 +49,3 @@ TEST(StateShare, DeterministicModelMatchesOnlyASharePlausiblyAtItsOwnValue) {
   EXPECT_FALSE(exactStateShare(0).known());
   EXPECT_FALSE(shareDifference(exactStateShare(4), counted(0, 30)).compatible());
 }
-
-TEST(StateShare, AThreeSigmaDifferenceIntervalUsesWilsonAtThreeDeviates) {
-  // 50 of 100 independent windows against an exact 0.5: Wilson at z = 3 is centred on 0.5 with
-  // half-width 3 sqrt(0.25/100 + 9/(4 * 100^2)) / (1 + 9/100) = 0.143674 (Wilson, JASA 22,
-  // 209 (1927)); the exact share adds nothing. At z = 1.96: 0.096 (narrower).
-  const ShareDifference wide =
-      shareDifference(pooledStateShare(100, 50, 100), exactStateShare(2), 3.0);
-  EXPECT_NEAR(wide.difference, -0.5, 1e-12);
-  EXPECT_NEAR(wide.low, -0.5 - 0.143674, 1e-6);
-  EXPECT_NEAR(wide.high, -0.5 + 0.143674, 1e-6);
-  const ShareDifference narrow =
-      shareDifference(pooledStateShare(100, 50, 100), exactStateShare(2));
-  EXPECT_NEAR(narrow.high - narrow.low, 2 * 0.0961, 2e-4);
-}
