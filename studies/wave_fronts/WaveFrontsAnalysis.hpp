@@ -121,15 +121,18 @@ struct ModelCandidate {
 };
 
 // How stable a verdict is against the choice of seeds (docs/studies.md, "Verdict
-// stability"). Decided unless a candidate before the first that reproduces is `not_yet`
-// (then seeds are added up to [particles] max_seeds, and a verdict still open is
-// "undecided"); beside it, the share of bootstrap resamples of the seeds (same number,
+// stability"). Decided unless a candidate before the first that reproduces is `not_yet`;
+// then seeds are added up to [particles] max_seeds. At the cap a candidate still open has not
+// been shown to reproduce (an equivalence test that cannot reject "different" does not claim
+// "equal"), so the verdict is the simplest candidate shown to reproduce, or "none", and the
+// open ones are named. Beside it, the share of bootstrap resamples of the seeds (same number,
 // drawn with replacement) that give the same verdict as all seeds.
 struct VerdictStability {
-  std::string verdict;  // the full set's: a candidate, "none" or "undecided"
+  std::string verdict;  // the full set's: a candidate, "none" or (below the cap) "undecided"
   double agreement = NAN;
   int seeds = 0, resamples = 0;
   bool decided = false;
+  std::vector<std::string> open;         // at the cap: candidates before the verdict still open
   std::map<std::string, double> shares;  // every verdict the resamples gave, with its share
 };
 
@@ -141,6 +144,10 @@ struct ModelHierarchy {
   std::vector<ModelCandidate> candidates;
   std::string simplest;    // empty: none reproduces the particles (or undecided)
   bool undecided = false;  // a candidate before `simplest` (or any, if none) is not_yet
+  // Passing over open candidates: the simplest shown to reproduce (empty: none), and the open
+  // ones before it. The verdict at the cap of seeds.
+  std::string shown;
+  std::vector<std::string> open;
   double front_tolerance = NAN, share_tolerance = NAN;  // the study's, judged with
   VerdictStability stability;
 };

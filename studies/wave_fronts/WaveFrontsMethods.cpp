@@ -253,6 +253,10 @@ ModelHierarchy judgeModels(const WaveFrontsConfig& c, const ModelInputs& in, int
       if (mc.match == Match::yes) m.simplest = mc.description;
       m.undecided = mc.match == Match::not_yet;
     }
+    if (m.shown.empty()) {
+      if (mc.match == Match::yes) m.shown = mc.description;
+      if (mc.match == Match::not_yet) m.open.push_back(mc.description);
+    }
     m.candidates.push_back(mc);
   }
   return m;
@@ -336,6 +340,9 @@ void writeModels(h5::File& f, const std::string& root, int law, const ModelHiera
   // The verdict and its stability over seeds (docs/studies.md, "Verdict stability").
   const VerdictStability& v = m.stability;
   f.writeStringAttribute(g, "verdict", v.verdict);
+  std::string open;  // at the cap: the candidates passed over as open ("" for none)
+  for (const std::string& o : v.open) open += (open.empty() ? "" : "; ") + o;
+  f.writeStringAttribute(g, "verdict_open_at_cap", open);
   putValue(f, g, "front_tolerance", m.front_tolerance);
   putValue(f, g, "share_tolerance", m.share_tolerance);
   for (const ModelCandidate& c : m.candidates)

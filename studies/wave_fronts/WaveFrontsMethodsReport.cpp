@@ -134,12 +134,22 @@ std::string verdictText(const VerdictStability& v) {
         "undecided at {} seeds: the interval of a simpler candidate still crosses a "
         "tolerance's edge (bootstrap resamples of the seeds: {})",
         v.seeds, alternatives);
-  const std::string said = v.verdict == "none" ? "no simpler model reproduces the particles"
-                                               : "simplest model that reproduces it: " + v.verdict;
+  std::string said = v.verdict == "none" ? "no simpler model reproduces the particles"
+                                         : "simplest model that reproduces it: " + v.verdict;
+  std::string when = fmt::format("decided at {} seeds", v.seeds);
+  if (!v.open.empty()) {
+    said = v.verdict == "none" ? "no simpler model is shown to reproduce the particles"
+                               : "simplest model shown to reproduce it: " + v.verdict;
+    std::string names;
+    for (const std::string& o : v.open) names += (names.empty() ? "" : "; ") + o;
+    when = fmt::format(
+        "at the cap of {} seeds, where the interval of {} still crosses a tolerance's edge: not "
+        "shown to reproduce, not shown to differ",
+        v.seeds, names);
+  }
   return fmt::format(
-      "{} (decided at {} seeds; the same verdict in {:.0f} % of {} bootstrap resamples of the "
-      "seeds: {})",
-      said, v.seeds, 100 * v.agreement, v.resamples, alternatives);
+      "{} ({}; the same verdict in {:.0f} % of {} bootstrap resamples of the seeds: {})", said,
+      when, 100 * v.agreement, v.resamples, alternatives);
 }
 
 std::string doublingVerdict(const WaveFrontsResults& r) {
@@ -232,7 +242,9 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
           "within the study's tolerances ({}), and does not if either lies wholly outside; "
           "otherwise it is open, and seeds are added (the full and the simpler "
           "particle models) up to [particles] max_seeds. The verdict is the first candidate that "
-          "reproduces; it is undecided while a simpler one is open. A hydro candidate whose own "
+          "reproduces; it is undecided while a simpler one is open, and at the cap a candidate "
+          "still open is passed over as not shown to reproduce (and named). A hydro candidate "
+          "whose own "
           "front error alone keeps its interval across the tolerance's edge cannot be told by any "
           "number of seeds and is passed over (the table marks it: the verdict is then the "
           "simplest among the candidates that could be told). Beside each verdict: the share of "

@@ -25,21 +25,27 @@ std::vector<int> seedsOf(const WaveFrontsConfig& c, const RunSet& runs, int law)
 }
 
 VerdictStability modelVerdictStability(const WaveFrontsConfig& c, const ModelInputs& in, int law) {
-  auto verdict = [&](const std::vector<int>& pick) {
-    const ModelHierarchy m = judgeModels(c, in, law, pick);
-    return m.undecided ? std::string("undecided") : m.simplest.empty() ? "none" : m.simplest;
-  };
   const int n = static_cast<int>(in.seeds.size());
+  // Below the cap an open candidate leaves the verdict undecided (more seeds follow); at the
+  // cap it is passed over as not shown (the resamples have as many seeds, so the same rule).
+  const bool at_cap = n >= c.max_seeds;
+  auto verdict = [&](const ModelHierarchy& m) {
+    if (m.undecided && !at_cap) return std::string("undecided");
+    const std::string& pick = m.undecided ? m.shown : m.simplest;
+    return pick.empty() ? std::string("none") : pick;
+  };
   std::vector<int> all(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) all[static_cast<std::size_t>(i)] = i;
   VerdictStability v;
-  v.verdict = verdict(all);
+  const ModelHierarchy everyone = judgeModels(c, in, law, all);
+  v.verdict = verdict(everyone);
+  if (everyone.undecided && at_cap) v.open = everyone.open;
   v.seeds = n;
   v.resamples = c.resamples;
   // The same resamples on every build (SeedResampling.hpp).
   std::map<std::string, int> count;
   for (const auto& draw : seedDraws(static_cast<std::size_t>(n), c.resamples, 20261202))
-    ++count[verdict(std::vector<int>(draw.begin(), draw.end()))];
+    ++count[verdict(judgeModels(c, in, law, std::vector<int>(draw.begin(), draw.end())))];
   // Counts divided once, so that the agreement and the verdict's own share are one number.
   for (const auto& [s, k] : count) v.shares[s] = static_cast<double>(k) / c.resamples;
   v.agreement = count.count(v.verdict) ? v.shares[v.verdict] : 0.0;

@@ -116,6 +116,30 @@ TEST(VerdictStability, AnEqualCandidateStaysOpenUntilSeedsNarrowTheIntervalInsid
   EXPECT_TRUE(many.decided);
 }
 
+TEST(VerdictStability, ACandidateStillOpenAtTheCapIsPassedOverAsNotShownToReproduce) {
+  // The equal but noisy candidate of the test above, 3 seeds, with max_seeds = 3: no more seeds
+  // can come, and an equivalence that could not be shown is not claimed. The verdict is the
+  // next candidate shown to reproduce (here none: the no-rotation runs failed), and the open
+  // one is named. Below the cap the same inputs are "undecided".
+  const SeedRun r = seedRun(1, 12, 25, 1.0, 0.2);
+  WaveFrontsConfig capped = config();
+  capped.max_seeds = 3;
+  const ModelInputs in = inputs(repeated(r, 3), repeated(r, 3));
+  const VerdictStability v = modelVerdictStability(capped, in, 1);
+  EXPECT_EQ(v.verdict, "none");
+  EXPECT_TRUE(v.decided);
+  ASSERT_EQ(v.open.size(), 1u);
+  EXPECT_EQ(v.open.front(), kConstantE);
+  // A simpler candidate open at the cap does not hide a later one that reproduces.
+  ModelInputs later = in;
+  later.particles["no rotation "] = repeated(seedRun(1, 12, 25, 1.0, 0.01), 3);
+  later.particles[""] = repeated(seedRun(1, 12, 25, 1.0, 0.01), 3);
+  const VerdictStability w = modelVerdictStability(capped, later, 1);
+  EXPECT_EQ(w.verdict, "particles, no rotation (mu = 0)");
+  ASSERT_EQ(w.open.size(), 1u);
+  EXPECT_EQ(modelVerdictStability(config(), later, 1).verdict, "undecided");
+}
+
 TEST(VerdictStability, ADeterministicCandidateTooImpreciseForTheToleranceCannotBeTold) {
   // A hydro front of 1.0 +- 0.2 against the particles' 1.0 +- 0.01: 1.96 x 0.2 = 0.39 exceeds
   // 15 % of 1.0 whatever the particles' error, so more seeds cannot decide; a particle
