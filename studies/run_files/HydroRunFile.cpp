@@ -118,11 +118,13 @@ HydroFields readHydroFields(const std::string& path) {
   const auto speed = f.readDataset<double>("/fronts/speed");
   const auto err = f.readDataset<double>("/fronts/fit_error");
   const auto first = f.readDataset<double>("/fronts/first_phase");
+  const auto last = f.readDataset<double>("/fronts/last_phase");
   const auto impact = f.readDataset<double>("/fronts/from_impact");
   const auto peak = f.readDataset<double>("/fronts/peak_temperature");
   for (std::size_t e = 0; e < speed.size(); ++e) {
     Front fr;
     fr.first_phase = static_cast<int>(first[e]);
+    fr.last_phase = static_cast<int>(last[e]);
     fr.start = r.phase[static_cast<std::size_t>(first[e])];
     fr.speed = speed[e];
     fr.error = err[e];

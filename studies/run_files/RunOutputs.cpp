@@ -56,6 +56,7 @@ ParticleFields readFieldsUnder(const h5::File& f, const std::string& root) {
       static_cast<int>(f.readAttribute<std::int64_t>(root.empty() ? par : root, "pooled_cycles"));
   r.blocks = static_cast<int>(f.readAttribute<std::int64_t>(par, "blocks"));
   const auto first = f.readDataset<double>(root + "/fronts/first_phase");
+  const auto last = f.readDataset<double>(root + "/fronts/last_phase");
   const auto speed = f.readDataset<double>(root + "/fronts/speed");
   const auto error = f.readDataset<double>(root + "/fronts/speed_error");
   const auto peak = f.readDataset<double>(root + "/fronts/peak_temperature");
@@ -65,6 +66,7 @@ ParticleFields readFieldsUnder(const h5::File& f, const std::string& root) {
   for (std::size_t e = 0; e < speed.size(); ++e) {
     Front fr;
     fr.first_phase = static_cast<int>(first[e]);
+    fr.last_phase = static_cast<int>(last[e]);
     fr.start = r.phase[static_cast<std::size_t>(first[e])];
     fr.speed = speed[e];
     fr.error = error[e];

@@ -12,6 +12,7 @@ namespace granwave {
 
 struct Front {
   int first_phase = 0;                 // index of the first phase in the window
+  int last_phase = 0;                  // index of the last (cyclic: may be below the first)
   double start = 0;                    // t/T of the first phase, within the window
   double speed = 0, error = 0;         // m/s, lab frame
   double peak = 0;                     // max T~_g / T0 over the episode

@@ -17,21 +17,32 @@ const std::string kRoot = "/results/wave_fronts";
 PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   PaperLaw out;
   std::vector<ImpactFronts> per_seed;
+  std::vector<Measurement> tracked;
   std::vector<double> minima;
+  const double jump = PaperLaw::kPeakJump * c.scenes.base[law].particles.diameter;
   for (int seed : c.seeds) {
     auto p = particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("seed {}", seed)));
     if (!p) continue;
     per_seed.push_back(impactFronts(p->fronts));
+    tracked.push_back(velocityFronts(*p).speed);
+    for (const Front& f : p->fronts) {
+      if (!f.from_impact) continue;
+      ++out.peak_fronts;
+      out.peak_jumps += peakJumps(*p, f, jump);
+    }
     for (double m : centerOfMassMinimumPhases(*p, p->cycles_per_window)) minima.push_back(m);
     out.periods.push_back(p->layer_period);
     if (seed == c.seeds.front()) out.seed1 = p;
     if (!out.first) out.first = std::move(p);
   }
   out.ed = combineImpactFronts(per_seed);
+  out.tracked = combine(tracked);
   out.seeds_used = static_cast<int>(per_seed.size());
   out.collision_phase = meanPhase(minima);
   out.hydro[0] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "velocity"));
   out.hydro[1] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "constant"));
+  for (HydroOutcome& h : out.hydro)
+    h.tracked = trackedHydroFront(h, c.scenes.base[law].drive.frequency);
   return out;
 }
 
@@ -276,6 +287,22 @@ HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
   const int cycles = h.fields->periodic ? h.fields->period : 2;
   h.collision_phase = meanPhase(centerOfMassMinimumPhases(*h.fields, cycles));
   return h;
+}
+
+bool peakJumps(const Profiles& p, const Front& f, double limit) {
+  if (p.phases <= 1 || p.front.size() != static_cast<std::size_t>(p.phases)) return false;
+  const int steps = ((f.last_phase - f.first_phase) % p.phases + p.phases) % p.phases;
+  for (int k = 0; k < steps; ++k) {
+    const double a = p.front[static_cast<std::size_t>((f.first_phase + k) % p.phases)];
+    const double b = p.front[static_cast<std::size_t>((f.first_phase + k + 1) % p.phases)];
+    if (b - a > limit) return true;  // NaN (no peak) compares false
+  }
+  return false;
+}
+
+Measurement trackedHydroFront(const HydroOutcome& h, double frequency) {
+  if (!h.fields || h.fields->phases <= 1) return {};
+  return velocityFronts(*h.fields, (h.fields->phase[1] - h.fields->phase[0]) / frequency).speed;
 }
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {

@@ -28,6 +28,9 @@ struct HydroOutcome {
   std::optional<HydroFields> fields;
   std::string failure;
   ImpactFronts fronts;
+  // The velocity-jump front (VelocityFronts.hpp), which the model hierarchy compares; set by
+  // readModelInputs for its candidates (it needs the scene's frequency).
+  Measurement tracked;
   double collision_phase = NAN;  // t/T of the lowest centre of mass (mean over cycles)
   double cpu = 0;                // s
 };
@@ -41,6 +44,11 @@ struct PaperLaw {
   std::optional<ParticleFields> first;  // the first finished seed (fronts, centre of mass)
   std::optional<ParticleFields> seed1;  // the first seed listed, if finished (profiles)
   HydroOutcome hydro[2];                // velocity-dependent closure, constant e_eff
+  Measurement tracked;                  // velocity-jump front, combined over the seeds
+  // Impact fronts of the T~g peak over the seeds, and those whose peak rises by more than
+  // kPeakJump between two phases: a jump to another maximum, not a travelling front.
+  int peak_fronts = 0, peak_jumps = 0;
+  static constexpr double kPeakJump = 2.5;  // particle diameters per phase
 };
 
 // One point of a sweep: particles (seed 1) and hydro.
@@ -152,11 +160,13 @@ struct ModelHierarchy {
   VerdictStability stability;
 };
 
-// One particle run of a model on one seed: its impact fronts, layer period and state windows
-// (all, in the period-2 state, effective).
+// One particle run of a model on one seed: its impact fronts (the peak of T~g, and the
+// velocity-jump front the model hierarchy compares), layer period and state windows (all, in
+// the period-2 state, effective).
 struct SeedRun {
   bool ok = false;
   ImpactFronts fronts;
+  Measurement tracked;  // m/s, velocity-jump front (VelocityFronts.hpp)
   int period = 0;
   int windows = 0, period2_windows = 0;
   double effective_windows = 0;
@@ -173,8 +183,8 @@ struct ModelInputs {
 // The paper's scene of one law, resolved by state (docs/studies.md, "State-resolved
 // statistics"): the share of seeds whose run has period 2 and the share of time in the
 // period-2 state, each with a 95 % Wilson interval (seeds: n = seeds; time: n = the sum of
-// the seeds' effective windows, seeds being independent); the impact fronts of the period-1
-// and period-2 episodes combined over seeds, and (wet law) r_x of each state's episodes
+// the seeds' effective windows, seeds being independent); the velocity-jump fronts of the
+// period-1 and period-2 episodes combined over seeds, and (wet law) r_x of each state's episodes
 // against the whole dry run of the same seed (mean over seeds, error: their standard error).
 struct StateShares {
   int seeds = 0, seeds_period2 = 0;
@@ -230,6 +240,10 @@ double meanPhase(const std::vector<double>& phases);
 // Parts of the analysis by section; WaveFrontsMethods.cpp: where methods fail, the model
 // hierarchy, LAMMPS.
 HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label);
+// Its velocity-jump front (the time between phases from the window and the drive frequency).
+Measurement trackedHydroFront(const HydroOutcome& h, double frequency);
+// Does the T~g peak of front `f` rise by more than `limit` (m) between two of its phases?
+bool peakJumps(const Profiles& p, const Front& f, double limit);
 std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label);
 FailureMap analyseFailures(const WaveFrontsConfig& config, const RunSet& runs);
 // The seeds of the paper's scene that ran: the study's, then any added for an undecided

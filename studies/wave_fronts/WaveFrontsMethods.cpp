@@ -29,21 +29,21 @@ struct OverSeeds {
 
 OverSeeds overSeeds(const ModelInputs& in, const std::string& tag, const std::vector<int>& pick) {
   OverSeeds out;
-  std::vector<ImpactFronts> fronts;
+  std::vector<Measurement> fronts;
   std::map<int, int> count;
   int windows = 0, period2 = 0;
   double effective = 0;
   for (int i : pick) {
     const SeedRun& r = in.particles.at(tag)[static_cast<std::size_t>(i)];
     if (!r.ok) continue;
-    fronts.push_back(r.fronts);
+    fronts.push_back(r.tracked);
     ++count[r.period];
     out.periods += (out.periods.empty() ? "" : ", ") + std::to_string(r.period);
     windows += r.windows;
     period2 += r.period2_windows;
     effective += r.effective_windows;
   }
-  out.speed = combineImpactFronts(fronts).all;
+  out.speed = combine(fronts);
   int best = 0;
   for (auto [period, n] : count)
     if (n > best) {
@@ -205,13 +205,17 @@ ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int l
       SeedRun r;
       if (auto p = particleFields(runs, label)) {
         const StateSeries st = readStateSeries(runs.get(label).fieldsPath());
-        r = {true,         impactFronts(p->fronts), p->layer_period,
+        r = {true,         impactFronts(p->fronts), velocityFronts(*p).speed, p->layer_period,
              st.windows(), st.period2_windows,      st.effective_windows};
       }
       in.particles[tag].push_back(r);
     }
-  for (const CandidateSpec& cand : candidateSpecs(c, law))
-    if (cand.hydro) in.hydro[cand.label] = hydroOutcome(runs, cand.label);
+  for (const CandidateSpec& cand : candidateSpecs(c, law)) {
+    if (!cand.hydro) continue;
+    HydroOutcome h = hydroOutcome(runs, cand.label);
+    h.tracked = trackedHydroFront(h, c.scenes.base[law].drive.frequency);
+    in.hydro[cand.label] = std::move(h);
+  }
   return in;
 }
 
@@ -235,7 +239,7 @@ ModelHierarchy judgeModels(const WaveFrontsConfig& c, const ModelInputs& in, int
       mc.failed = !h.fields;
       mc.failure = "failed: " + shortReason(h.failure);
       if (h.fields) {
-        mc.speed = h.fronts.all;
+        mc.speed = h.tracked;
         const int period = h.fields->periodic ? h.fields->period : 0;
         mc.periods = period ? std::to_string(period) : "none";
         mc.share = exactStateShare(period);

@@ -233,7 +233,11 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
       fmt::format(
           "Reference: the full particle model (rotation with Coulomb friction, velocity-dependent "
           "restitution), combined over seeds. Candidates from the simplest up, each judged on its "
-          "mean impact-front speed and on its share of time in the period-2 state (Newcombe's "
+          "impact-front speed by the velocity jump (the tracker of the N sweep below; the peak of "
+          "T~g, the paper's marker, is not a travelling front on this scene: it sits near the "
+          "plate at 0.4-0.7 m/s, then jumps to the top of the layer, and the line fitted across "
+          "the jump depends on where the jump falls, docs/studies.md) and on its share of time "
+          "in the period-2 state (Newcombe's "
           "hybrid score interval of the difference, over the effective numbers of 12-cycle "
           "windows; a hydro run is deterministic: its share is 0 for period 1, 1 for period 2, "
           "unknown otherwise). The share, not the period of each run, is compared, because a "
@@ -256,7 +260,7 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
   t.title = "Model hierarchy against the full particle model";
   t.columns = {"layer",
                "model",
-               "front speed (m/s)",
+               "front speed, velocity jump (m/s)",
                "Δ / σ",
                "period (T)",
                "time in period 2 (95 %)",

@@ -49,13 +49,33 @@ Table paperTable() {
                "after weak impact (m/s)",
                "after strong impact (m/s)",
                "all impact fronts (m/s)",
+               "velocity-jump front (m/s)",
                "CM period (T)",
                "CM lowest at t/T"};
-  t.rows.push_back({"paper, wet", format(kPaperWeakWet), format(kPaperStrongWet), "–", "2",
+  t.rows.push_back({"paper, wet", format(kPaperWeakWet), format(kPaperStrongWet), "–", "–", "2",
                     formatNumber(kPaperCollisionWet)});
-  t.rows.push_back({"paper, dry", "–", "–", "–", "2 (stated for both layers)",
+  t.rows.push_back({"paper, dry", "–", "–", "–", "–", "2 (stated for both layers)",
                     formatNumber(kPaperCollisionDry)});
   return t;
+}
+
+// What the T~g-peak columns measure on this scene, counted over the runs (docs/studies.md,
+// "Front speeds on the paper's scene").
+std::string peakJumpText(const WaveFrontsResults& r) {
+  int fronts = 0, jumps = 0;
+  for (const PaperLaw& p : r.paper) {
+    fronts += p.peak_fronts;
+    jumps += p.peak_jumps;
+  }
+  if (fronts == 0) return "";
+  return fmt::format(
+      "In {} of the {} T~g-peak impact fronts of these runs the peak rises by more than {:g} d "
+      "between two phases: it stays near the plate, then the maximum of T~g moves to the top "
+      "of the layer, and the line fitted through the episode (the columns 'after weak', 'after "
+      "strong' and 'all') depends on where that jump falls. The velocity-jump front (the "
+      "boundary between the material moving with the plate and the material still falling) "
+      "travels through the layer and is what the model hierarchy below compares.",
+      jumps, fronts, PaperLaw::kPeakJump);
 }
 
 // One law's rows of the paper table and its series in the front and centre-of-mass figures.
@@ -64,8 +84,8 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
   const double d = c.scenes.base[0].particles.diameter;
   const std::string name = kLawNames[law];
   t.rows.push_back({fmt::format("ED {} ({} seeds × {:g} s)", name, p.seeds_used, c.duration),
-                    format(p.ed.weak), format(p.ed.strong), format(p.ed.all), periodList(p.periods),
-                    formatNumber(p.collision_phase)});
+                    format(p.ed.weak), format(p.ed.strong), format(p.ed.all), format(p.tracked),
+                    periodList(p.periods), formatNumber(p.collision_phase)});
   if (p.first) {
     fronts.series.push_back(frontSeries(*p.first, d, "ED " + name, kLawColors[law], "^"));
     com.series.push_back(centerOfMassSeries(*p.first, d, "ED " + name, kLawColors[law]));
@@ -76,11 +96,12 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
                             (v == 0 ? ", velocity-dependent closure"
                                     : fmt::format(", constant e = {:.3f}", c.e_eff[law]));
     if (!h.fields) {
-      t.rows.push_back({row, "failed: " + shortReason(h.failure), "–", "–", "–", "–"});
+      t.rows.push_back({row, "failed: " + shortReason(h.failure), "–", "–", "–", "–", "–"});
       continue;
     }
     t.rows.push_back(
         {row, format(h.fronts.weak), format(h.fronts.strong), format(h.fronts.all),
+         format(h.tracked),
          h.fields->periodic ? std::to_string(h.fields->period) : "none in the cycles run",
          formatNumber(h.collision_phase)});
     if (v != 0) continue;
@@ -126,6 +147,7 @@ void paperSection(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report&
   com.ylabel = "z_CM / d (lab frame)";
   for (int law = 0; law < kLaws; ++law) paperLaw(c, law, r.paper[law], t, fronts, com);
   s.add(std::move(t));
+  s.addText(peakJumpText(r));
   s.add(std::move(fronts));
   s.add(std::move(com));
 }

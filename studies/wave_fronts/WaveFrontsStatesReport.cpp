@@ -26,8 +26,9 @@ void stateSection(const WaveFrontsResults& r, Report& report) {
       "strength the same comb shifted off the f/2 lines holds (the window's own noise). Share "
       "of seeds: runs whose whole-run period is 2 (95 % Wilson interval, n = seeds). Share of "
       "time: windows in the period-2 state over all seeds (95 % Wilson interval with the summed "
-      "effective numbers of windows). Fronts and r_x of a state: the phase averages of that "
-      "state's windows alone (period-2 windows aligned on their strong impact), combined over "
+      "effective numbers of windows). Fronts (by the velocity jump) and r_x of a state: the "
+      "phase averages of that state's windows alone (period-2 windows aligned on their strong "
+      "impact), combined over "
       "the seeds that had at least as many windows in the state as blocks; r_x against the "
       "whole dry run of the same seed.");
   Table t;
@@ -37,8 +38,8 @@ void stateSection(const WaveFrontsResults& r, Report& report) {
                "period-2 share of seeds",
                "windows",
                "period-2 share of time",
-               "front, period 1 (m/s)",
-               "front, period 2 (m/s)",
+               "velocity-jump front, period 1 (m/s)",
+               "velocity-jump front, period 2 (m/s)",
                "r_x, period 1",
                "r_x, period 2"};
   for (int law = 0; law < kLaws; ++law) {

@@ -86,7 +86,7 @@ void addSeed(StateShares& s, const StateSeries& series, int period) {
 
 StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   StateShares s;
-  std::vector<ImpactFronts> fronts[2];
+  std::vector<Measurement> fronts[2];  // velocity-jump fronts (VelocityFronts.hpp)
   std::vector<Measurement> ratios[2];
   for (int sd : seedsOf(c, runs, law)) {
     const RunRecord& r = runs.get(WaveFrontsConfig::particleRun(law, fmt::format("seed {}", sd)));
@@ -100,7 +100,7 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
     for (int k = 0; k < 2; ++k) {
       const auto state = readStateFields(r.fieldsPath(), k + 1);
       if (!state) continue;
-      fronts[k].push_back(impactFronts(state->fronts));
+      fronts[k].push_back(velocityFronts(*state).speed);
       if (!dry) continue;
       const Measurement ratio = waveMomentumRatio(*dry, *state, {});
       if (ratio.valid()) ratios[k].push_back(ratio);
@@ -116,7 +116,7 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
   s.time_low = time.low;
   s.time_high = time.high;
   for (int k = 0; k < 2; ++k) {
-    s.front[k] = combineImpactFronts(fronts[k]).all;
+    s.front[k] = combine(fronts[k]);
     s.front_seeds[k] = static_cast<int>(fronts[k].size());
     if (!ratios[k].empty()) s.r_x[k] = overSeedRuns(ratios[k]);
     s.r_x_seeds[k] = static_cast<int>(ratios[k].size());

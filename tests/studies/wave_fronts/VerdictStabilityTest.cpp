@@ -12,13 +12,11 @@ using namespace granwave;
 
 namespace {
 
-// One seed's run: its front speed (error `front_error`), its period, and `period2` of 25
-// twelve-cycle windows in the period-2 state, `effective` of them independent.
+// One seed's run: its velocity-jump front speed (error `front_error`), its period, and `period2` of
+// 25 twelve-cycle windows in the period-2 state, `effective` of them independent.
 SeedRun seedRun(int period, int period2, double effective, double front = 1.0,
                 double front_error = 0.05) {
-  SeedRun r{true, {}, period, 25, period2, effective};
-  r.fronts.all = {front, front_error};
-  return r;
+  return SeedRun{true, {}, {front, front_error}, period, 25, period2, effective};
 }
 
 std::vector<SeedRun> repeated(const SeedRun& r, int n) {
