@@ -23,11 +23,32 @@ FrontProfiles profilesOf(const Profiles& p, const std::vector<double>& density,
   return f;
 }
 
+// The peak T~g/T0 of the T~g-peak impact front whose start is nearest (cyclically) to
+// `phase`: how strong the impact that launched a velocity-jump episode was.
+double impactStrength(const ParticleFields& p, int phase) {
+  double best = NAN;
+  int nearest = p.phases;
+  for (const Front& f : p.fronts) {
+    if (!f.from_impact) continue;
+    const int apart = std::abs(f.first_phase - phase) % p.phases;
+    const int gap = std::min(apart, p.phases - apart);
+    if (gap < nearest) {
+      nearest = gap;
+      best = f.peak;
+    }
+  }
+  return best;
+}
+
 // An episode counts when the bootstrap (if any) finds it in at least half of its resamples.
-VelocityFronts summarise(const std::vector<TrackedFront>& fronts) {
+// `strength[k]` ranks episode k for weak and strong (empty: not ranked).
+VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
+                         const std::vector<double>& strength = {}) {
   VelocityFronts v;
   std::vector<Measurement> speeds, jumps;
-  for (const TrackedFront& f : fronts) {
+  double weakest = INFINITY, strongest = -INFINITY;
+  for (std::size_t k = 0; k < fronts.size(); ++k) {
+    const TrackedFront& f = fronts[k];
     ++v.episodes;
     if (!f.resolved) {
       v.lower_bound = std::isfinite(v.lower_bound) ? std::min(v.lower_bound, f.speed_lower_bound)
@@ -40,6 +61,16 @@ VelocityFronts summarise(const std::vector<TrackedFront>& fronts) {
     const double fit = std::isfinite(f.fit_error) ? f.fit_error : 0.0;
     speeds.push_back({f.speed, std::hypot(boot, fit)});
     if (std::isfinite(f.jump_speed)) jumps.push_back({f.jump_speed, f.jump_speed_spread});
+    const double s = k < strength.size() ? strength[k] : NAN;
+    if (!std::isfinite(s)) continue;
+    if (s < weakest) {
+      weakest = s;
+      v.weak = speeds.back();
+    }
+    if (s > strongest) {
+      strongest = s;
+      v.strong = speeds.back();
+    }
   }
   v.speed = combine(speeds);
   v.jump_speed = combine(jumps);
@@ -62,7 +93,10 @@ VelocityFronts velocityFronts(const ParticleFields& p) {
   const std::size_t per_block = static_cast<std::size_t>(p.phases) * p.nz;
   for (int b = 0; b < p.blocks; ++b)
     blocks.push_back(profilesOf(p, p.block_area_fraction, p.block_velocity_z, b * per_block));
-  return summarise(trackWithBootstrap(pooled, blocks, dt));
+  const std::vector<TrackedFront> tracked = trackWithBootstrap(pooled, blocks, dt);
+  std::vector<double> strength;
+  for (const TrackedFront& f : tracked) strength.push_back(impactStrength(p, f.first_phase));
+  return summarise(tracked, strength);
 }
 
 VelocityFronts velocityFronts(const Profiles& p, double phase_dt) {
@@ -71,8 +105,10 @@ VelocityFronts velocityFronts(const Profiles& p, double phase_dt) {
 
 VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {
   VelocityFronts v;
-  std::vector<Measurement> speeds, jumps;
+  std::vector<Measurement> speeds, jumps, weak, strong;
   for (const VelocityFronts& s : seeds) {
+    weak.push_back(s.weak);
+    strong.push_back(s.strong);
     v.episodes += s.episodes;
     v.resolved += s.resolved;
     speeds.push_back(s.speed);
@@ -84,6 +120,8 @@ VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {
   }
   v.speed = combine(speeds);
   v.jump_speed = combine(jumps);
+  v.weak = combine(weak);
+  v.strong = combine(strong);
   if (v.speed.valid()) v.why_none.clear();
   return v;
 }

@@ -14,6 +14,10 @@ namespace granwave {
 
 struct VelocityFronts {
   Measurement speed;       // m/s, lab frame: the run's resolved impact fronts combined
+  // After the weak and after the strong impact of the window (particles): the resolved
+  // episodes ranked by the peak T~g/T0 of the T~g-peak impact front that starts nearest to
+  // them (ImpactFronts.hpp); one resolved episode stands for both.
+  Measurement weak, strong;
   Measurement jump_speed;  // m/s, Rankine-Hugoniot [rho v] / [rho] over the same fronts
   int episodes = 0, resolved = 0;
   double lower_bound = NAN;  // m/s: the smallest bound of the unresolved fronts
@@ -24,7 +28,8 @@ struct VelocityFronts {
 VelocityFronts velocityFronts(const ParticleFields& p);
 // Hydro (lab-frame profiles), `phase_dt` the time between its phases (s).
 VelocityFronts velocityFronts(const Profiles& p, double phase_dt);
-// Over seeds: the speeds combined (granwave::combine: the seed scatter enlarges the error),
+// Over seeds: the speeds (and weak, strong) combined (granwave::combine: the seed scatter
+// enlarges the error),
 // lower bounds by their smallest, the reasons kept when no seed has a speed.
 VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds);
 

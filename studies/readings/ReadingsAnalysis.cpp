@@ -8,8 +8,9 @@
 #include <optional>
 
 #include "studies/framework/FailureReason.hpp"
-#include "studies/framework/ImpactFronts.hpp"
+#include "studies/framework/ImpactFronts.hpp"  // centerOfMassMinimumPhases
 #include "studies/framework/StudyResults.hpp"
+#include "studies/framework/VelocityFronts.hpp"
 #include "studies/framework/WaveMomentumRatio.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 
@@ -158,22 +159,25 @@ void waveLaw(const PointRuns& w, int law, ReadingOutcome& o) {
   o.tc_elastic_share[law] = all > 0 ? elastic / all : std::numeric_limits<double>::quiet_NaN();
 }
 
-// Fronts of the wet layer and r_x of each seed with both layers.
+// Fronts of the wet layer and r_x of each seed with both layers. The fronts are tracked by the
+// velocity jump: on this scene the T~g peak jumps from near the plate to the top of the layer
+// within one phase, so a line through its heights is no front speed (docs/studies.md, "Front
+// speeds on the paper's scene"); weak and strong are told apart by the T~g peak's height.
 void waveFrontsAndRatio(const ReadingsConfig& c, const PointRuns (&w)[kLaws], ReadingOutcome& o) {
-  std::vector<ImpactFronts> fronts;
+  std::vector<VelocityFronts> fronts;
   std::vector<double> ratios;
   const WaveRatioOptions opt{c.wave_duration, 0.88, c.min_rms, c.min_area_fraction};
   for (std::size_t s = 0; s < w[1].fields.size(); ++s) {
     const auto& wet = w[1].fields[s];
     if (!wet) continue;
-    fronts.push_back(impactFronts(wet->fronts));
+    fronts.push_back(velocityFronts(*wet));
     const auto& dry = s < w[0].fields.size() ? w[0].fields[s] : std::nullopt;
     if (!dry) continue;
     const Measurement r = waveMomentumRatio(*dry, *wet, opt);
     if (std::isfinite(r.value)) ratios.push_back(r.value);
   }
   if (!fronts.empty()) {
-    const ImpactFronts all = combineImpactFronts(fronts);
+    const VelocityFronts all = combineVelocityFronts(fronts);
     o.weak_front = all.weak;
     o.strong_front = all.strong;
   }
