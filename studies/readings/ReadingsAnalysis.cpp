@@ -66,8 +66,8 @@ Verdict majority(const SeedFraction& f) {
 Verdict agrees(const Measurement& m, double paper, double tolerance) {
   if (!std::isfinite(m.value)) return Verdict::NoData;
   const double err = std::isfinite(m.error) ? m.error : 0.0;
-  return std::abs(m.value - paper) <= 2 * std::hypot(err, tolerance) ? Verdict::Holds
-                                                                     : Verdict::Fails;
+  if (std::abs(m.value - paper) > 2 * std::hypot(err, tolerance)) return Verdict::Fails;
+  return err > tolerance ? Verdict::Undecided : Verdict::Holds;
 }
 
 int ReadingOutcome::holds() const {

@@ -26,7 +26,9 @@ enum class Verdict { Holds, Fails, Undecided, NoData };
 const char* verdictName(Verdict v);
 // A majority statement: holds if the interval lies above 1/2, fails if below.
 Verdict majority(const SeedFraction& f);
-// A number against the paper's: holds within 2 sigma (sigma^2 = error^2 + tolerance^2).
+// A number against the paper's: holds within 2 sigma (sigma^2 = error^2 + tolerance^2), fails
+// beyond; a number whose own error exceeds the tolerance cannot hold (it would agree with
+// almost anything): it is undecided unless it fails even so.
 Verdict agrees(const Measurement& m, double paper, double tolerance);
 
 // The paper's statements, the rows of the report's table.

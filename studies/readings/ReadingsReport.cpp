@@ -45,7 +45,8 @@ Table verdictTable(const ReadingsConfig& c, const ReadingsResults& r) {
       "the statement; a majority statement holds if the 68 % Wilson interval of the fraction "
       "lies above 1/2, fails if below, else undecided. Numbers: mean +- standard error over "
       "seeds, compared with the paper within 2 sigma (sigma^2 = error^2 + the paper's "
-      "uncertainty; for phases, its rounding to 0.01 and the phase bin). Period and state "
+      "uncertainty; for phases, its rounding to 0.01 and the phase bin), undecided when the "
+      "number's own error exceeds the paper's uncertainty. Period and state "
       "from the live classifier of each run (docs/classification.md).",
       c.seeds.size(), formatCompact(c.cycles));
   t.columns = {"the paper says"};

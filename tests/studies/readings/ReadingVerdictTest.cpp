@@ -32,3 +32,11 @@ TEST(ReadingVerdict, NumberAgreesWithinTwoCombinedSigmas) {
   EXPECT_EQ(agrees({1.5, 0.1}, 1.95, 0.25), Verdict::Holds);
   EXPECT_EQ(agrees({}, 1.95, 0.25), Verdict::NoData);
 }
+
+TEST(ReadingVerdict, NumberLessPreciseThanThePaperCannotHoldButCanFail) {
+  // 0.80 +- 1.26 against 1.61 +- 0.25 lies within 2 hypot(1.26, 0.25) = 2.57 but says nothing:
+  // undecided. 9.0 +- 1.26 is beyond 2.57 even so: fails.
+  EXPECT_EQ(agrees({0.80, 1.26}, 1.61, 0.25), Verdict::Undecided);
+  EXPECT_EQ(agrees({9.0, 1.26}, 1.61, 0.25), Verdict::Fails);
+  EXPECT_EQ(agrees({1.60, 0.25}, 1.61, 0.25), Verdict::Holds);
+}
