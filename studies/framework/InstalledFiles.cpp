@@ -29,6 +29,9 @@ std::string installedFile(const std::string& relative) {
 }
 
 SourceCommit sourceCommit() {
+  // The record beside a replaced executable is the new build's, not this process's.
+  std::error_code ec;
+  if (std::filesystem::canonical(selfExecutable(), ec).empty() || ec) return {};
   // Written by cmake/SourceCommit.cmake: the commit, then "clean", "dirty" or "unknown".
   std::ifstream in(installedFile("source-commit"));
   std::string commit, state;

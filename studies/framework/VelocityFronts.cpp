@@ -23,30 +23,13 @@ FrontProfiles profilesOf(const Profiles& p, const std::vector<double>& density,
   return f;
 }
 
-// The peak T~g/T0 of the T~g-peak impact front whose start is nearest (cyclically) to
-// `phase`: how strong the impact that launched a velocity-jump episode was.
-double impactStrength(const ParticleFields& p, int phase) {
-  double best = NAN;
-  int nearest = p.phases;
-  for (const Front& f : p.fronts) {
-    if (!f.from_impact) continue;
-    const int apart = std::abs(f.first_phase - phase) % p.phases;
-    const int gap = std::min(apart, p.phases - apart);
-    if (gap < nearest) {
-      nearest = gap;
-      best = f.peak;
-    }
-  }
-  return best;
-}
-
-// An episode counts when the bootstrap (if any) finds it in at least half of its resamples.
-// `strength[k]` ranks episode k for weak and strong (empty: not ranked).
+// An episode counts when the bootstrap (if any) finds it in at least half of its resamples;
+// `counted[k]` gets episode k's speed, or stays invalid.
 VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
-                         const std::vector<double>& strength = {}) {
+                         std::vector<Measurement>* counted = nullptr) {
   VelocityFronts v;
   std::vector<Measurement> speeds, jumps;
-  double weakest = INFINITY, strongest = -INFINITY;
+  if (counted) counted->assign(fronts.size(), Measurement{});
   for (std::size_t k = 0; k < fronts.size(); ++k) {
     const TrackedFront& f = fronts[k];
     ++v.episodes;
@@ -60,17 +43,8 @@ VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
     const double boot = std::isfinite(f.bootstrap_error) ? f.bootstrap_error : 0.0;
     const double fit = std::isfinite(f.fit_error) ? f.fit_error : 0.0;
     speeds.push_back({f.speed, std::hypot(boot, fit)});
+    if (counted) (*counted)[k] = speeds.back();
     if (std::isfinite(f.jump_speed)) jumps.push_back({f.jump_speed, f.jump_speed_spread});
-    const double s = k < strength.size() ? strength[k] : NAN;
-    if (!std::isfinite(s)) continue;
-    if (s < weakest) {
-      weakest = s;
-      v.weak = speeds.back();
-    }
-    if (s > strongest) {
-      strongest = s;
-      v.strong = speeds.back();
-    }
   }
   v.speed = combine(speeds);
   v.jump_speed = combine(jumps);
@@ -94,9 +68,39 @@ VelocityFronts velocityFronts(const ParticleFields& p) {
   for (int b = 0; b < p.blocks; ++b)
     blocks.push_back(profilesOf(p, p.block_area_fraction, p.block_velocity_z, b * per_block));
   const std::vector<TrackedFront> tracked = trackWithBootstrap(pooled, blocks, dt);
-  std::vector<double> strength;
-  for (const TrackedFront& f : tracked) strength.push_back(impactStrength(p, f.first_phase));
-  return summarise(tracked, strength);
+  std::vector<Measurement> counted;
+  VelocityFronts v = summarise(tracked, &counted);
+  // Weak and strong: the T~g-peak impact fronts ranked by their peak (as ImpactFronts does),
+  // each matched to the velocity-jump episode that starts nearest, within 3 phases (the
+  // bootstrap's matching rule); an unmatched, unresolved or dropped episode leaves it invalid.
+  std::vector<const Front*> impact;
+  for (const Front& f : p.fronts)
+    if (f.from_impact) impact.push_back(&f);
+  if (impact.empty()) return v;
+  std::sort(impact.begin(), impact.end(),
+            [](const Front* a, const Front* b) { return a->peak < b->peak; });
+  std::vector<int> starts;
+  for (const TrackedFront& f : tracked) starts.push_back(f.first_phase);
+  auto matched = [&](const Front& f) {
+    const int k = nearestEpisode(starts, f.first_phase, p.phases, 3);
+    return k < 0 ? Measurement{} : counted[static_cast<std::size_t>(k)];
+  };
+  v.weak = matched(*impact.front());
+  v.strong = matched(*impact.back());
+  return v;
+}
+
+int nearestEpisode(const std::vector<int>& starts, int phase, int phases, int within) {
+  int best = -1, nearest = within + 1;
+  for (std::size_t k = 0; k < starts.size(); ++k) {
+    const int apart = ((starts[k] - phase) % phases + phases) % phases;
+    const int gap = std::min(apart, phases - apart);
+    if (gap < nearest) {
+      nearest = gap;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
 }
 
 VelocityFronts velocityFronts(const Profiles& p, double phase_dt) {

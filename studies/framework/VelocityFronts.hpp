@@ -13,16 +13,21 @@
 namespace granwave {
 
 struct VelocityFronts {
-  Measurement speed;       // m/s, lab frame: the run's resolved impact fronts combined
-  // After the weak and after the strong impact of the window (particles): the resolved
-  // episodes ranked by the peak T~g/T0 of the T~g-peak impact front that starts nearest to
-  // them (ImpactFronts.hpp); one resolved episode stands for both.
+  Measurement speed;  // m/s, lab frame: the run's resolved impact fronts combined
+  // After the weak and after the strong impact of the window (particles): the T~g-peak impact
+  // fronts ranked by their peak T~g/T0 (ImpactFronts.hpp), each matched to the velocity-jump
+  // episode starting within 3 phases of it; invalid when that episode is unresolved, dropped
+  // or missing. A window with one T~g-peak impact front has it stand for both.
   Measurement weak, strong;
   Measurement jump_speed;  // m/s, Rankine-Hugoniot [rho v] / [rho] over the same fronts
   int episodes = 0, resolved = 0;
   double lower_bound = NAN;  // m/s: the smallest bound of the unresolved fronts
   std::string why_none;      // empty when `speed` is valid
 };
+
+// The index of the start in `starts` nearest to `phase` on a cycle of `phases`, if no more
+// than `within` phases away; else -1.
+int nearestEpisode(const std::vector<int>& starts, int phase, int phases, int within);
 
 // Particles: time between phases from the run's frequency and window.
 VelocityFronts velocityFronts(const ParticleFields& p);

@@ -17,14 +17,15 @@ const std::string kRoot = "/results/wave_fronts";
 PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   PaperLaw out;
   std::vector<ImpactFronts> per_seed;
-  std::vector<Measurement> tracked;
+  std::vector<VelocityFronts> tracked;
   std::vector<double> minima;
-  const double jump = PaperLaw::kPeakJump * c.scenes.base[law].particles.diameter;
   for (int seed : c.seeds) {
     auto p = particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("seed {}", seed)));
     if (!p) continue;
     per_seed.push_back(impactFronts(p->fronts));
-    tracked.push_back(velocityFronts(*p).speed);
+    tracked.push_back(velocityFronts(*p));
+    const double jump =
+        PaperLaw::kPeakJumpSpeed * p->cycles_per_window / (p->frequency * p->phases);
     for (const Front& f : p->fronts) {
       if (!f.from_impact) continue;
       ++out.peak_fronts;
@@ -36,7 +37,7 @@ PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
     if (!out.first) out.first = std::move(p);
   }
   out.ed = combineImpactFronts(per_seed);
-  out.tracked = combine(tracked);
+  out.tracked = combineVelocityFronts(tracked);
   out.seeds_used = static_cast<int>(per_seed.size());
   out.collision_phase = meanPhase(minima);
   out.hydro[0] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "velocity"));
@@ -153,6 +154,12 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
   putMeasurement(f, g_ed, "strong", p.ed.strong);
   putMeasurement(f, g_ed, "all", p.ed.all);
   putValue(f, g_ed, "collision_phase", p.collision_phase);
+  // The velocity-jump front (all impacts, weak, strong) and the T~g-peak fronts that jump.
+  putMeasurement(f, g_ed, "velocity_jump", p.tracked.speed);
+  putMeasurement(f, g_ed, "velocity_jump_weak", p.tracked.weak);
+  putMeasurement(f, g_ed, "velocity_jump_strong", p.tracked.strong);
+  putValue(f, g_ed, "peak_fronts", p.peak_fronts);
+  putValue(f, g_ed, "peak_fronts_jumping", p.peak_jumps);
   const char* variants[2] = {"velocity", "constant"};
   for (int v = 0; v < 2; ++v) {
     const HydroOutcome& h = p.hydro[v];
@@ -161,6 +168,7 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
     putMeasurement(f, gh, "weak", h.fronts.weak);
     putMeasurement(f, gh, "strong", h.fronts.strong);
     putMeasurement(f, gh, "all", h.fronts.all);
+    putMeasurement(f, gh, "velocity_jump", h.tracked);
     putValue(f, gh, "period", h.fields->period);
     putValue(f, gh, "collision_phase", h.collision_phase);
   }

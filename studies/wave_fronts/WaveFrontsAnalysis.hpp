@@ -29,7 +29,7 @@ struct HydroOutcome {
   std::string failure;
   ImpactFronts fronts;
   // The velocity-jump front (VelocityFronts.hpp), which the model hierarchy compares; set by
-  // readModelInputs for its candidates (it needs the scene's frequency).
+  // readModelInputs and paperLaw (it needs the scene's frequency).
   Measurement tracked;
   double collision_phase = NAN;  // t/T of the lowest centre of mass (mean over cycles)
   double cpu = 0;                // s
@@ -44,11 +44,12 @@ struct PaperLaw {
   std::optional<ParticleFields> first;  // the first finished seed (fronts, centre of mass)
   std::optional<ParticleFields> seed1;  // the first seed listed, if finished (profiles)
   HydroOutcome hydro[2];                // velocity-dependent closure, constant e_eff
-  Measurement tracked;                  // velocity-jump front, combined over the seeds
-  // Impact fronts of the T~g peak over the seeds, and those whose peak rises by more than
-  // kPeakJump between two phases: a jump to another maximum, not a travelling front.
+  VelocityFronts tracked;               // velocity-jump fronts, combined over the seeds
+  // Impact fronts of the T~g peak over the seeds, and those whose peak rises between two
+  // phases faster than kPeakJumpSpeed (2.5 times the fastest front the paper reports): a jump
+  // to another maximum, not a travelling front.
   int peak_fronts = 0, peak_jumps = 0;
-  static constexpr double kPeakJump = 2.5;  // particle diameters per phase
+  static constexpr double kPeakJumpSpeed = 5.0;  // m/s
 };
 
 // One point of a sweep: particles (seed 1) and hydro.

@@ -235,7 +235,7 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
           "restitution), combined over seeds. Candidates from the simplest up, each judged on its "
           "impact-front speed by the velocity jump (the tracker of the N sweep below; the peak of "
           "T~g, the paper's marker, is not a travelling front on this scene: it sits near the "
-          "plate at 0.4-0.7 m/s, then jumps to the top of the layer, and the line fitted across "
+          "plate at 0.45-0.7 m/s, then jumps to the top of the layer, and the line fitted across "
           "the jump depends on where the jump falls, docs/studies.md) and on its share of time "
           "in the period-2 state (Newcombe's "
           "hybrid score interval of the difference, over the effective numbers of 12-cycle "
@@ -287,12 +287,12 @@ void modelSection(const WaveFrontsConfig& config, const WaveFrontsResults& r, Re
   s.add(std::move(t));
   s.addText(verdicts);
   s.addText(doublingVerdict(r));
-  const ImpactFronts& wet = r.paper[1].ed;
-  const ImpactFronts& dry = r.paper[0].ed;
+  const VelocityFronts& wet = r.paper[1].tracked;
+  const VelocityFronts& dry = r.paper[0].tracked;
   report.summary = fmt::format(
-      "Particles, wet layer: fronts at {} m/s after the weak and {} m/s after the strong impact "
-      "(paper: 1.61 ± 0.25 and 1.95 ± 0.25; {} and {} sigma away). Dry layer: {} and {} "
-      "m/s. {}",
+      "Particles, wet layer: velocity-jump fronts at {} m/s after the weak and {} m/s after "
+      "the strong impact (paper: 1.61 ± 0.25 and 1.95 ± 0.25; {} and {} sigma away). Dry "
+      "layer: {} and {} m/s. {}",
       format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
       formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
       format(dry.strong), verdicts);

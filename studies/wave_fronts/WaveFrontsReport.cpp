@@ -68,14 +68,19 @@ std::string peakJumpText(const WaveFrontsResults& r) {
     jumps += p.peak_jumps;
   }
   if (fronts == 0) return "";
-  return fmt::format(
-      "In {} of the {} T~g-peak impact fronts of these runs the peak rises by more than {:g} d "
-      "between two phases: it stays near the plate, then the maximum of T~g moves to the top "
-      "of the layer, and the line fitted through the episode (the columns 'after weak', 'after "
-      "strong' and 'all') depends on where that jump falls. The velocity-jump front (the "
-      "boundary between the material moving with the plate and the material still falling) "
-      "travels through the layer and is what the model hierarchy below compares.",
-      jumps, fronts, PaperLaw::kPeakJump);
+  const std::string counted = fmt::format(
+      "In {} of the {} T~g-peak impact fronts of these runs the peak rises between two phases "
+      "faster than {:g} m/s. ",
+      jumps, fronts, PaperLaw::kPeakJumpSpeed);
+  const std::string meaning =
+      jumps == 0 ? ""
+                 : "There the maximum of T~g leaves the plate region for the top of the layer "
+                   "at once, and the line fitted through the episode (the columns 'after weak', "
+                   "'after strong' and 'all') depends on where that jump falls. ";
+  return counted + meaning +
+         "The velocity-jump front (the boundary between the material moving with the plate "
+         "and the material still falling) travels through the layer and is what the model "
+         "hierarchy below compares.";
 }
 
 // One law's rows of the paper table and its series in the front and centre-of-mass figures.
@@ -84,8 +89,9 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
   const double d = c.scenes.base[0].particles.diameter;
   const std::string name = kLawNames[law];
   t.rows.push_back({fmt::format("ED {} ({} seeds × {:g} s)", name, p.seeds_used, c.duration),
-                    format(p.ed.weak), format(p.ed.strong), format(p.ed.all), format(p.tracked),
-                    periodList(p.periods), formatNumber(p.collision_phase)});
+                    format(p.ed.weak), format(p.ed.strong), format(p.ed.all),
+                    format(p.tracked.speed), periodList(p.periods),
+                    formatNumber(p.collision_phase)});
   if (p.first) {
     fronts.series.push_back(frontSeries(*p.first, d, "ED " + name, kLawColors[law], "^"));
     com.series.push_back(centerOfMassSeries(*p.first, d, "ED " + name, kLawColors[law]));

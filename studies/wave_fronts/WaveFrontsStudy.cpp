@@ -152,10 +152,12 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
   for (int seed : c_.seeds) planSeed(f, law, seed, requests_);
   for (int seed : c_.extraSeeds()) planSeed(f, law, seed, extra_[law]);
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {}, 0);
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
-      {"hydro.restitution_model=\"constant\"", constant_e}, 0);
+  // The hydro runs of the paper's scene are sampled as densely as the N sweep: a deterministic
+  // candidate's front error is its fit error alone, which more phases narrow.
   const std::string phases = fmt::format("run.phases_per_cycle={}", c_.sweep_phases);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {phases}, 0);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
+      {"hydro.restitution_model=\"constant\"", constant_e, phases}, 0);
   for (int n : c_.counts) {
     std::vector<std::string> count = c_.countOverrides(law, n);
     count.push_back(phases);
@@ -184,11 +186,11 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
             0)
             .failure_note = expected;
   }
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "Garzo-Dufty"), {"hydro.transport=\"garzo-dufty\""},
-      0);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "Garzo-Dufty"),
+      {"hydro.transport=\"garzo-dufty\"", phases}, 0);
   // Rough particles: the rotational temperature as a field (docs/hydro.md, "Rough particles"),
   // the continuum's answer to the particles' friction.
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "rough"), {"hydro.particles=\"rough\""}, 0);
+  add(f, RunKind::Hydro, law, C::hydroRun(law, "rough"), {"hydro.particles=\"rough\"", phases}, 0);
 }
 
 // The paper's scene on one seed: the full particle model and the simpler particle models,

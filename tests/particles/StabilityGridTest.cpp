@@ -35,7 +35,9 @@ void expectFinishes(const std::string& law, int f, int gamma, int seed) {
   const std::string where = law + ", f = " + std::to_string(f) +
                             " Hz, Gamma = " + std::to_string(gamma) + ", seed " +
                             std::to_string(seed);
-  EXPECT_NO_THROW(sim.run()) << where;
+  bool completed = false;
+  EXPECT_NO_THROW(completed = sim.run().completed) << where;
+  EXPECT_TRUE(completed) << where;
   EXPECT_DOUBLE_EQ(sim.now(), s.run.duration) << where;
 }
 
