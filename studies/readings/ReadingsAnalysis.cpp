@@ -162,7 +162,8 @@ void waveLaw(const PointRuns& w, int law, ReadingOutcome& o) {
 // Fronts of the wet layer and r_x of each seed with both layers. The fronts are tracked by the
 // velocity jump: on this scene the T~g peak jumps from near the plate to the top of the layer
 // within one phase, so a line through its heights is no front speed (docs/studies.md, "Front
-// speeds on the paper's scene"); weak and strong are told apart by the peak T~g/T0 of the T~g-peak fronts.
+// speeds on the paper's scene"); weak and strong are told apart by the peak T~g/T0 of the T~g-peak
+// fronts.
 void waveFrontsAndRatio(const ReadingsConfig& c, const PointRuns (&w)[kLaws], ReadingOutcome& o) {
   std::vector<VelocityFronts> fronts;
   std::vector<double> ratios;
