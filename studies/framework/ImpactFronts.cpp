@@ -20,6 +20,8 @@ ImpactFronts impactFronts(const std::vector<Front>& fronts) {
   r.strong = {strong.speed, strong.error};
   r.weak_start = weak.start;
   r.strong_start = strong.start;
+  r.weak_phase = weak.first_phase;
+  r.strong_phase = strong.first_phase;
   std::vector<Measurement> all;
   for (const Front* f : impact) all.push_back({f->speed, f->error});
   r.all = combine(all);

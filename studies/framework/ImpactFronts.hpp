@@ -15,6 +15,7 @@ struct ImpactFronts {
   Measurement weak, strong;                               // m/s, lab frame
   Measurement all;                                        // combined over the run's impact fronts
   double weak_start = kNoPhase, strong_start = kNoPhase;  // t/T within the window
+  int weak_phase = -1, strong_phase = -1;  // their first phase index in the window (one run)
   int count = 0;
   static constexpr double kNoPhase = -1;
 };

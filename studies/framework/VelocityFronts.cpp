@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "coarse_grain/ImpactFrontTracker.hpp"
+#include "studies/framework/ImpactFronts.hpp"
 
 namespace granwave {
 
@@ -70,23 +71,19 @@ VelocityFronts velocityFronts(const ParticleFields& p) {
   const std::vector<TrackedFront> tracked = trackWithBootstrap(pooled, blocks, dt);
   std::vector<Measurement> counted;
   VelocityFronts v = summarise(tracked, &counted);
-  // Weak and strong: the T~g-peak impact fronts ranked by their peak (as ImpactFronts does),
-  // each matched to the velocity-jump episode that starts nearest, within 3 phases (the
-  // bootstrap's matching rule); an unmatched, unresolved or dropped episode leaves it invalid.
-  std::vector<const Front*> impact;
-  for (const Front& f : p.fronts)
-    if (f.from_impact) impact.push_back(&f);
-  if (impact.empty()) return v;
-  std::sort(impact.begin(), impact.end(),
-            [](const Front* a, const Front* b) { return a->peak < b->peak; });
+  // Weak and strong: the T~g-peak impact fronts as ImpactFronts ranks them, each matched to
+  // the velocity-jump episode that starts nearest, within 3 phases (the bootstrap's matching
+  // rule); an unmatched, unresolved or dropped episode leaves it invalid.
+  const ImpactFronts ranked = impactFronts(p.fronts);
+  if (ranked.count == 0) return v;
   std::vector<int> starts;
   for (const TrackedFront& f : tracked) starts.push_back(f.first_phase);
-  auto matched = [&](const Front& f) {
-    const int k = nearestEpisode(starts, f.first_phase, p.phases, 3);
+  auto matched = [&](int phase) {
+    const int k = nearestEpisode(starts, phase, p.phases, 3);
     return k < 0 ? Measurement{} : counted[static_cast<std::size_t>(k)];
   };
-  v.weak = matched(*impact.front());
-  v.strong = matched(*impact.back());
+  v.weak = matched(ranked.weak_phase);
+  v.strong = matched(ranked.strong_phase);
   return v;
 }
 

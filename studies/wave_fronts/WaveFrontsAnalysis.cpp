@@ -43,7 +43,7 @@ PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   out.hydro[0] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "velocity"));
   out.hydro[1] = hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, "constant"));
   for (HydroOutcome& h : out.hydro)
-    h.tracked = trackedHydroFront(h, c.scenes.base[law].drive.frequency);
+    h.tracked = trackedHydroFronts(h, c.scenes.base[law].drive.frequency).speed;
   return out;
 }
 
@@ -81,11 +81,7 @@ void trackSweepPoint(const WaveFrontsConfig& c, const RunSet& runs, int law, int
   s.tracked = combineVelocityFronts(seeds);
   const HydroOutcome h =
       hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)));
-  if (h.fields && h.fields->phases > 1) {
-    const double dt =
-        (h.fields->phase[1] - h.fields->phase[0]) / c.scenes.base[law].drive.frequency;
-    s.hydro_tracked = velocityFronts(*h.fields, dt);
-  }
+  s.hydro_tracked = trackedHydroFronts(h, c.scenes.base[law].drive.frequency);
 }
 
 ParameterSweep wetSweep(const WaveFrontsConfig& c, const RunSet& runs, const std::string& key,
@@ -308,9 +304,9 @@ bool peakJumps(const Profiles& p, const Front& f, double limit) {
   return false;
 }
 
-Measurement trackedHydroFront(const HydroOutcome& h, double frequency) {
+VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency) {
   if (!h.fields || h.fields->phases <= 1) return {};
-  return velocityFronts(*h.fields, (h.fields->phase[1] - h.fields->phase[0]) / frequency).speed;
+  return velocityFronts(*h.fields, (h.fields->phase[1] - h.fields->phase[0]) / frequency);
 }
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {

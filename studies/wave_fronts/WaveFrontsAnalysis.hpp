@@ -161,12 +161,10 @@ struct ModelHierarchy {
   VerdictStability stability;
 };
 
-// One particle run of a model on one seed: its impact fronts (the peak of T~g, and the
-// velocity-jump front the model hierarchy compares), layer period and state windows (all, in
-// the period-2 state, effective).
+// One particle run of a model on one seed: its velocity-jump front (what the model hierarchy
+// compares), layer period and state windows (all, in the period-2 state, effective).
 struct SeedRun {
   bool ok = false;
-  ImpactFronts fronts;
   Measurement tracked;  // m/s, velocity-jump front (VelocityFronts.hpp)
   int period = 0;
   int windows = 0, period2_windows = 0;
@@ -241,8 +239,9 @@ double meanPhase(const std::vector<double>& phases);
 // Parts of the analysis by section; WaveFrontsMethods.cpp: where methods fail, the model
 // hierarchy, LAMMPS.
 HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label);
-// Its velocity-jump front (the time between phases from the window and the drive frequency).
-Measurement trackedHydroFront(const HydroOutcome& h, double frequency);
+// Its velocity-jump fronts (the time between phases from the window and the drive frequency;
+// none without fields).
+VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency);
 // Does the T~g peak of front `f` rise by more than `limit` (m) between two of its phases?
 bool peakJumps(const Profiles& p, const Front& f, double limit);
 std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label);

@@ -205,15 +205,15 @@ ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int l
       SeedRun r;
       if (auto p = particleFields(runs, label)) {
         const StateSeries st = readStateSeries(runs.get(label).fieldsPath());
-        r = {true,         impactFronts(p->fronts), velocityFronts(*p).speed, p->layer_period,
-             st.windows(), st.period2_windows,      st.effective_windows};
+        r = {true,         velocityFronts(*p).speed, p->layer_period,
+             st.windows(), st.period2_windows,       st.effective_windows};
       }
       in.particles[tag].push_back(r);
     }
   for (const CandidateSpec& cand : candidateSpecs(c, law)) {
     if (!cand.hydro) continue;
     HydroOutcome h = hydroOutcome(runs, cand.label);
-    h.tracked = trackedHydroFront(h, c.scenes.base[law].drive.frequency);
+    h.tracked = trackedHydroFronts(h, c.scenes.base[law].drive.frequency).speed;
     in.hydro[cand.label] = std::move(h);
   }
   return in;

@@ -16,7 +16,7 @@ namespace {
 // 25 twelve-cycle windows in the period-2 state, `effective` of them independent.
 SeedRun seedRun(int period, int period2, double effective, double front = 1.0,
                 double front_error = 0.05) {
-  return SeedRun{true, {}, {front, front_error}, period, 25, period2, effective};
+  return SeedRun{true, {front, front_error}, period, 25, period2, effective};
 }
 
 std::vector<SeedRun> repeated(const SeedRun& r, int n) {
