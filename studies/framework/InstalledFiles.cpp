@@ -8,30 +8,42 @@
 
 namespace granwave {
 
-std::string installedFile(const std::string& relative) {
+namespace {
+
+// Where the running executable lives, and whether its file has been replaced since it
+// started: a rebuild or reinstall while this process runs makes the kernel name the running
+// one "<path> (deleted)", whose directory still holds the installed files. Empty if unknown.
+struct RunningExecutable {
+  std::filesystem::path path;
+  bool replaced = false;
+};
+
+RunningExecutable runningExecutable() {
   std::error_code ec;
-  std::filesystem::path exe = std::filesystem::canonical(selfExecutable(), ec);
-  if (ec) {
-    // A rebuild or reinstall while this process runs replaces its file: the kernel then names
-    // the running one "<path> (deleted)", whose directory still holds the installed files.
-    std::error_code link_ec;
-    std::string target = std::filesystem::read_symlink(selfExecutable(), link_ec).string();
-    const std::string deleted = " (deleted)";
-    if (!link_ec && target.size() > deleted.size() &&
-        target.compare(target.size() - deleted.size(), deleted.size(), deleted) == 0) {
-      target.resize(target.size() - deleted.size());
-      exe = target;
-      ec.clear();
-    }
-  }
-  const std::filesystem::path bin = ec ? std::filesystem::path(".") : exe.parent_path();
+  const std::filesystem::path exe = std::filesystem::canonical(selfExecutable(), ec);
+  if (!ec) return {exe, false};
+  std::string target = std::filesystem::read_symlink(selfExecutable(), ec).string();
+  const std::string deleted = " (deleted)";
+  if (ec || target.size() <= deleted.size() ||
+      target.compare(target.size() - deleted.size(), deleted.size(), deleted) != 0)
+    return {};
+  target.resize(target.size() - deleted.size());
+  return {target, true};
+}
+
+}  // namespace
+
+std::string installedFile(const std::string& relative) {
+  const RunningExecutable exe = runningExecutable();
+  const std::filesystem::path bin =
+      exe.path.empty() ? std::filesystem::path(".") : exe.path.parent_path();
   return (bin.parent_path() / "share" / "granwave" / relative).lexically_normal().string();
 }
 
 SourceCommit sourceCommit() {
   // The record beside a replaced executable is the new build's, not this process's.
-  std::error_code ec;
-  if (std::filesystem::canonical(selfExecutable(), ec).empty() || ec) return {};
+  const RunningExecutable exe = runningExecutable();
+  if (exe.path.empty() || exe.replaced) return {};
   // Written by cmake/SourceCommit.cmake: the commit, then "clean", "dirty" or "unknown".
   std::ifstream in(installedFile("source-commit"));
   std::string commit, state;
