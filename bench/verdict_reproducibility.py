@@ -64,11 +64,7 @@ def after(ref, cand, rng):
     return "undecided", False
 
 
-def shown(ref, cand, rng):
-    return after(ref, cand, rng)
-
-
-def rerun(rule, delta, cap, rng):
+def rerun(rule, delta, cap, rng, open_at_cap="undecided"):
     ref = rng.normal(MEAN, SPREAD_REF, cap)
     cand = rng.normal(MEAN + delta, SPREAD_CAND, cap)
     n = 3
@@ -77,7 +73,7 @@ def rerun(rule, delta, cap, rng):
         if decided:
             return v
         if n + 2 > cap:
-            return "no" if rule is shown else "undecided"
+            return open_at_cap
         n += 2
 
 
@@ -87,17 +83,18 @@ def main():
     ap.add_argument("--seed", type=int, default=20261203)
     ap.add_argument("--rules", default="before,after,shown", help="which rules to simulate")
     a = ap.parse_args()
-    rules = [(n, r) for n, r in (("before", before), ("after", after),
-                                     ("shown", shown)) if n in a.rules.split(",")]
+    # (name, rule, the verdict of a candidate still open at the cap)
+    rules = [(n, r, o) for n, r, o in (("before", before, "undecided"), ("after", after, "undecided"),
+                                       ("shown", after, "no")) if n in a.rules.split(",")]
     rng = np.random.default_rng(a.seed)
     print("rule,cap,delta_m_per_s,yes,no,undecided,right,same_in_two_reruns")
     for cap in (9, 15, 21):
         for delta in (0.0, 0.1, 0.22, 0.29, 0.4):
-            for name, rule in rules:
+            for name, rule, open_at_cap in rules:
                 trials = a.trials // 5 if name == "before" else a.trials  # bootstrap is slow
                 count = {"yes": 0, "no": 0, "undecided": 0}
                 for _ in range(trials):
-                    count[rerun(rule, delta, cap, rng)] += 1
+                    count[rerun(rule, delta, cap, rng, open_at_cap)] += 1
                 p = {k: c / trials for k, c in count.items()}
                 same = sum(x * x for x in p.values())
                 right = p["yes"] if delta <= TOLERANCE * MEAN else p["no"]
