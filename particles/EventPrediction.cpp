@@ -232,9 +232,9 @@ void EdSimulation::predictPairWith(int i, const ParticleState& s, double speed_i
   if (linear) {
     // Same acceleration for both: the relative motion is a straight line.
     double tau = pairCollisionTime(rx, rz, vx, vz, d);
-    // Touching "at once": only if the approach is more than round-off (rare, so the
-    // tolerance, which costs square roots, is computed only here).
-    if (tau == 0.0) {
+    // Touching "at once", or at a gap of round-off: only if the approach is more than
+    // round-off (rare, so the tolerance, which costs square roots, is computed only here).
+    if (tau == 0.0 || (std::isfinite(tau) && rx * rx + rz * rz <= d * d * (1.0 + kTouchingSlack))) {
       const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
       tau = pairCollisionTime(rx, rz, vx, vz, d, tol);
     }
@@ -243,7 +243,7 @@ void EdSimulation::predictPairWith(int i, const ParticleState& s, double speed_i
   }
   const double tol = approachTolerance(speed_i, std::sqrt(q.vx * q.vx + ovz * ovz));
   const double r2 = rx * rx + rz * rz;
-  if (r2 <= d * d * (1.0 + 2e-10)) {
+  if (r2 <= d * d * (1.0 + kTouchingSlack)) {
     // Touching a rider with no relative normal motion while pressed: rests on it now.
     const double dist = std::sqrt(r2);
     const double rate = (rx * vx + rz * vz) / dist;
@@ -280,8 +280,8 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
   // Two flyers share the acceleration (-g), so their relative motion is a straight line: the
   // common case (every pair of the gas, most of the paper's scenes) is tested here inline with
   // the same arithmetic as predictPairWith, and a receding pair (b >= 0, about half) costs no
-  // more than its relative position and velocity. Riders, and pairs touching now (tau = 0, which
-  // needs the round-off tolerance), take the general path.
+  // more than its relative position and velocity. Riders, and pairs touching now or at a gap of
+  // round-off (which need the round-off tolerance), take the general path.
   const double g = cfg_.gravity, d = cfg_.diameter, t0 = now_;
   const bool flyer = s.motion == Motion::Ballistic;
   double speed_i = -1.0;  // |v_i|, computed once, and only if the general path needs it
@@ -304,8 +304,9 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
       const double vx = s.vx - q.vx, vz = s.vz - (q.vz - g * dt);
       if (rx * vx + rz * vz >= 0.0) continue;  // receding: never (pairCollisionTime)
       const double tau = pairCollisionTime(rx, rz, vx, vz, d);
-      if (tau == 0.0) {
-        predictPairWith(i, s, speed(), j, nb[c], best);
+      if (tau == 0.0 ||
+          (tau < best.time - t0 && rx * rx + rz * rz <= d * d * (1.0 + kTouchingSlack))) {
+        predictPairWith(i, s, speed(), j, nb[c], best);  // the round-off tolerance decides
         continue;
       }
       if (t0 + tau < best.time) best = {t0 + tau, EventKind::Pair, j, q.counter};

@@ -42,6 +42,19 @@ TEST(PairCollisionTime, TouchingPairWithRoundOffApproachDoesNotCollide) {
   EXPECT_EQ(pairCollisionTime(1.0, 0, -1e-3, 0.3, 1.0, 3e-10), 0.0);
 }
 
+TEST(PairCollisionTime, PairAtRoundOffGapClosingByRoundOffDoesNotCollide) {
+  // A gap of round-off (|r|^2 - d^2 <= 2e-10 d^2) is contact for the tolerance test: closing
+  // by less than round-off, never; faster, at the straight line's time, as without it.
+  const double inf = std::numeric_limits<double>::infinity();
+  // Head-on; the tolerance 3e-10 stands for 1e-9 x speeds ~ 0.3.
+  EXPECT_EQ(pairCollisionTime(1.0 + 1e-14, 0, -1e-12, 0, 1.0, 3e-10), inf);
+  EXPECT_NEAR(pairCollisionTime(1.0 + 1e-14, 0, -1e-3, 0, 1.0, 3e-10), 1e-11, 1e-13);
+  // Without a tolerance (the engine's first pass) the slow pair still has its time.
+  EXPECT_NEAR(pairCollisionTime(1.0 + 1e-14, 0, -1e-12, 0, 1.0), 1e-2, 1e-4);
+  // A real gap (1e-6) closing slowly is not contact: it collides when it gets there.
+  EXPECT_NEAR(pairCollisionTime(1.0 + 1e-6, 0, -1e-12, 0, 1.0, 3e-10), 1e6, 1.0);
+}
+
 TEST(PairCollisionTime, StableForTinyGapsAndLargeSpeeds) {
   // Cancellation-free root: gap 1e-12 at speed 1e3 -> 1e-15. The gap itself is only known
   // to eps / 1e-12 ~ 1e-4 relative (1 + 1e-12 is rounded), which bounds the accuracy.

@@ -149,13 +149,13 @@ void expectFinishesWithTheAlarm(const GridPoint& p) {
 
 }  // namespace
 
-// The runs the collapse detector stopped with the default settings before the alarm, run
-// just past their stopping time: 10 Hz, Gamma = 2, seeds 1 and 3 (stopped at t = 3.109 and
-// 2.801 s), and 15 Hz, Gamma = 5, seed 5 (2.934 s); and 10 Hz, Gamma = 2, seed 2, which the
-// alarm alone, without the inelastic group collision of a particle that still rattles with
-// the rule on, stopped at 3.285 s.
+// Runs the collapse detector stops with the rule off (contact.sleep = "off"), run with the
+// default just past their stopping time: 10 Hz, Gamma = 2, seeds 2 and 4 (stopped at
+// t = 1.307 and 1.902 s; measured with the round-off gap of docs/physics.md, "Resting
+// contacts", item 4, which changed these trajectories). Seed 2 run to 3.3 s also needs the
+// inelastic group collision of a particle that still rattles with the rule on: with the alarm
+// alone, the detector stopped it at 3.285 s (measured before that change).
 TEST(RestingContactAlarm, WetGridRunsTheDetectorStoppedFinishWithTheDefault) {
-  for (const GridPoint& p : {GridPoint{"10", "2", "1", "3.2"}, GridPoint{"10", "2", "3", "2.9"},
-                             GridPoint{"15", "5", "5", "3.0"}, GridPoint{"10", "2", "2", "3.3"}})
+  for (const GridPoint& p : {GridPoint{"10", "2", "2", "3.3"}, GridPoint{"10", "2", "4", "2.0"}})
     expectFinishesWithTheAlarm(p);
 }
