@@ -12,11 +12,7 @@ int cellsAlong(double length, double min_side) {
 }
 
 CellGrid::CellGrid(const CellGeometry& g, int particles)
-    : g_(g),
-      head_(g.nx * g.nz, -1),
-      next_(particles, -1),
-      prev_(particles, -1),
-      cell_(particles, -1) {}
+    : g_(g), slots_(static_cast<std::size_t>(g.nx) * g.nz * stride_, 0), cell_(particles, -1) {}
 
 int CellGrid::locate(double x, double z) const {
   const int cx = std::clamp(static_cast<int>(std::floor((x - g_.x0) / g_.wx)), 0, g_.nx - 1);
@@ -25,36 +21,63 @@ int CellGrid::locate(double x, double z) const {
 }
 
 void CellGrid::insert(int p, int cell) {
+  if (slots_[static_cast<std::size_t>(cell) * stride_] == capacity()) grow();
+  int* block = &slots_[static_cast<std::size_t>(cell) * stride_];
+  const int n = block[0];
+  std::copy_backward(block + 1, block + 1 + n, block + 2 + n);
+  block[1] = p;
+  block[0] = n + 1;
   cell_[p] = cell;
-  prev_[p] = -1;
-  next_[p] = head_[cell];
-  if (head_[cell] >= 0) prev_[head_[cell]] = p;
-  head_[cell] = p;
 }
 
 void CellGrid::remove(int p) {
-  const int c = cell_[p];
-  if (prev_[p] >= 0) {
-    next_[prev_[p]] = next_[p];
-  } else {
-    head_[c] = next_[p];
-  }
-  if (next_[p] >= 0) prev_[next_[p]] = prev_[p];
+  int* block = &slots_[static_cast<std::size_t>(cell_[p]) * stride_];
+  int* members = block + 1;
+  int* end = members + block[0];
+  int* at = std::find(members, end, p);
+  std::copy(at + 1, end, at);
+  --block[0];
   cell_[p] = -1;
 }
 
+void CellGrid::grow() {
+  const int stride = 2 * stride_;
+  std::vector<int> slots(slots_.size() / stride_ * stride, 0);
+  for (std::size_t c = 0; c < slots_.size() / stride_; ++c)
+    std::copy_n(&slots_[c * stride_], stride_, &slots[c * stride]);
+  slots_ = std::move(slots);
+  stride_ = stride;
+}
+
+CellGrid::Lists CellGrid::lists() const {
+  const std::size_t cells = slots_.size() / stride_;
+  Lists out{std::vector<int>(cells, -1), std::vector<int>(cell_.size(), -1),
+            std::vector<int>(cell_.size(), -1), cell_};
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::span<const int> m = members(static_cast<int>(c));
+    if (m.empty()) continue;
+    out.head[c] = m[0];
+    for (std::size_t k = 1; k < m.size(); ++k) {
+      out.next[m[k - 1]] = m[k];
+      out.prev[m[k]] = m[k - 1];
+    }
+  }
+  return out;
+}
+
 void CellGrid::restore(const Lists& saved) {
-  const std::size_t n = cell_.size();
-  if (saved.head.size() != head_.size() || saved.next.size() != n || saved.prev.size() != n ||
+  const std::size_t n = cell_.size(), cells = slots_.size() / stride_;
+  if (saved.head.size() != cells || saved.next.size() != n || saved.prev.size() != n ||
       saved.cell.size() != n)
     throw std::invalid_argument("cell lists: saved for " + std::to_string(saved.head.size()) +
                                 " cells and " + std::to_string(saved.cell.size()) +
-                                " particles, the grid has " + std::to_string(head_.size()) +
-                                " and " + std::to_string(n));
+                                " particles, the grid has " + std::to_string(cells) + " and " +
+                                std::to_string(n));
   // Walk every list: each particle must be reached exactly once, in the cell it names.
   std::vector<char> seen(n, 0);
+  std::vector<std::vector<int>> order(cells);
   std::size_t reached = 0;
-  for (std::size_t c = 0; c < saved.head.size(); ++c) {
+  for (std::size_t c = 0; c < cells; ++c) {
     int previous = -1;
     for (int p = saved.head[c]; p >= 0; p = saved.next[p]) {
       if (static_cast<std::size_t>(p) >= n || seen[p] || saved.cell[p] != static_cast<int>(c) ||
@@ -63,15 +86,15 @@ void CellGrid::restore(const Lists& saved) {
       seen[p] = 1;
       ++reached;
       previous = p;
+      order[c].push_back(p);
     }
   }
   if (reached != n)
     throw std::invalid_argument("cell lists: " + std::to_string(n - reached) +
                                 " particles are in no cell");
-  head_ = saved.head;
-  next_ = saved.next;
-  prev_ = saved.prev;
-  cell_ = saved.cell;
+  std::fill(slots_.begin(), slots_.end(), 0);
+  for (std::size_t c = 0; c < cells; ++c)  // the last member first: insert puts it in front
+    for (auto p = order[c].rbegin(); p != order[c].rend(); ++p) insert(*p, static_cast<int>(c));
 }
 
 int CellGrid::newNeighbours(int cell, int step_x, int step_z, Neighbour out[3]) const {

@@ -51,7 +51,7 @@ EdSimulation::EdSimulation(const EngineConfig& config, const InitialCondition& i
     CellGrid::Neighbour nb[9];
     const int m = cells_.neighbours(c, nb);
     for (int k = 0; k < m; ++k) {
-      for (int j = cells_.head(nb[k].cell); j >= 0; j = cells_.next(j)) {
+      for (const int j : cells_.members(nb[k].cell)) {
         if (j <= i) continue;
         const double dx = p_[i].x - p_[j].x - nb[k].shift_x;
         const double dz = p_[i].z - p_[j].z - nb[k].shift_z;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 #include "particles/EdSimulation.hpp"
 #include "particles/GapRootFinder.hpp"
@@ -34,6 +35,47 @@ inline double fallTime(double gap, double v, double g) {
   }
   const double disc = std::max(0.0, v * v + 2.0 * g * gap);
   return (v + std::sqrt(disc)) / g;
+}
+
+// Largest cell block whose members predictPairs gathers into arrays on the stack. Disks that do
+// not overlap fit at most 8 to a square of side < 2d (cells are narrower than 2d), so a block
+// never grows past 15; a larger one is walked cell by cell.
+constexpr int kGatherCapacity = 15;
+
+// With the number of cells M and the block capacity known at compile time, the copying is
+// unrolled: the stencil of a prediction (9 cells, 3 after a crossing) costs no loop exits.
+template <int M, int Capacity>
+int gatherBlocks(const CellGrid& cells, const CellGrid::Neighbour* nb, int first, int* partner,
+                 unsigned char* via) {
+  int n = 0;
+#pragma GCC unroll 9
+  for (int c = 0; c < M; ++c) {
+    const std::span<const int> members = cells.members(nb[c].cell);
+    std::copy_n(members.data(), Capacity, partner + n);
+    std::fill_n(via + n, Capacity, static_cast<unsigned char>(first + c));
+    n += static_cast<int>(members.size());
+  }
+  return n;
+}
+
+template <int Capacity>
+int gatherBlocks(const CellGrid& cells, const CellGrid::Neighbour* nb, int m, int* partner,
+                 unsigned char* via) {
+  if (m == 9) return gatherBlocks<9, Capacity>(cells, nb, 0, partner, via);
+  if (m == 3) return gatherBlocks<3, Capacity>(cells, nb, 0, partner, via);
+  int n = 0;  // a stencil cut by a side wall, bottom or lid
+  for (int c = 0; c < m; ++c)
+    n += gatherBlocks<1, Capacity>(cells, nb + c, c, partner + n, via + n);
+  return n;
+}
+
+// The members of the m cells nb into partner, with the index of the cell each came through
+// into via; returns their number.
+int gatherPartners(const CellGrid& cells, const CellGrid::Neighbour* nb, int m, int* partner,
+                   unsigned char* via) {
+  if (cells.capacity() == 3) return gatherBlocks<3>(cells, nb, m, partner, via);
+  if (cells.capacity() == 7) return gatherBlocks<7>(cells, nb, m, partner, via);
+  return gatherBlocks<kGatherCapacity>(cells, nb, m, partner, via);
 }
 
 }  // namespace
@@ -289,29 +331,39 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
     if (speed_i < 0.0) speed_i = std::sqrt(s.vx * s.vx + s.vz * s.vz);
     return speed_i;
   };
-  for (int c = 0; c < m; ++c) {
-    const double shift_x = nb[c].shift_x, shift_z = nb[c].shift_z;
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
-      if (j == i) continue;
-      const ParticleState& q = p_[j];
-      if (!flyer || q.motion != Motion::Ballistic) {
-        predictPairWith(i, s, speed(), j, nb[c], best);
-        continue;
-      }
-      const double dt = t0 - q.t;
-      const double rx = s.x - (q.x + q.vx * dt) - shift_x;
-      const double rz = s.z - (q.z + (q.vz - 0.5 * g * dt) * dt) - shift_z;
-      const double vx = s.vx - q.vx, vz = s.vz - (q.vz - g * dt);
-      if (rx * vx + rz * vz >= 0.0) continue;  // receding: never (pairCollisionTime)
-      const double tau = pairCollisionTime(rx, rz, vx, vz, d);
-      if (tau == 0.0 ||
-          (tau < best.time - t0 && rx * rx + rz * rz <= d * d * (1.0 + kTouchingSlack))) {
-        predictPairWith(i, s, speed(), j, nb[c], best);  // the round-off tolerance decides
-        continue;
-      }
-      if (t0 + tau < best.time) best = {t0 + tau, EventKind::Pair, j, q.counter};
+  auto test = [&](int j, const CellGrid::Neighbour& cell) {
+    const ParticleState& q = p_[j];
+    if (!flyer || q.motion != Motion::Ballistic) {
+      if (j != i) predictPairWith(i, s, speed(), j, cell, best);
+      return;
     }
+    const double dt = t0 - q.t;
+    const double rx = s.x - (q.x + q.vx * dt) - cell.shift_x;
+    const double rz = s.z - (q.z + (q.vz - 0.5 * g * dt) * dt) - cell.shift_z;
+    const double vx = s.vx - q.vx, vz = s.vz - (q.vz - g * dt);
+    // Receding: never (pairCollisionTime). i itself is among the partners: one test for both,
+    // without a branch of its own (the | is deliberate: two unpredictable branches cost more).
+    if ((rx * vx + rz * vz >= 0.0) | (j == i)) return;
+    const double tau = pairCollisionTime(rx, rz, vx, vz, d);
+    if (tau == 0.0 ||
+        (tau < best.time - t0 && rx * rx + rz * rz <= d * d * (1.0 + kTouchingSlack))) {
+      predictPairWith(i, s, speed(), j, cell, best);  // the round-off tolerance decides
+      return;
+    }
+    if (t0 + tau < best.time) best = {t0 + tau, EventKind::Pair, j, q.counter};
+  };
+  if (cells_.capacity() > kGatherCapacity) {
+    for (int c = 0; c < m; ++c)
+      for (const int j : cells_.members(nb[c].cell)) test(j, nb[c]);
+    return;
   }
+  // The partners of all cells in one array first: a cell's block is copied whole (its empty
+  // slots are overwritten by the next cell's), so the gathering has no data-dependent branch,
+  // and the loop below has one exit instead of one per cell (docs/performance.md).
+  int partner[9 * kGatherCapacity];
+  unsigned char via[9 * kGatherCapacity];
+  const int n = gatherPartners(cells_, nb, m, partner, via);
+  for (int k = 0; k < n; ++k) test(partner[k], nb[via[k]]);
 }
 
 }  // namespace granwave

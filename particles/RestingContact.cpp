@@ -52,7 +52,7 @@ EdSimulation::Contacts EdSimulation::contactsOf(int k) const {
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(k), nb);
   for (int n = 0; n < m; ++n) {
-    for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
+    for (const int j : cells_.members(nb[n].cell)) {
       if (j == k) continue;
       const ParticleState o = extrapolated(j, now_);
       const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
@@ -122,7 +122,7 @@ void EdSimulation::moveTogether(int k) {
     CellGrid::Neighbour nb[9];
     const int m = cells_.neighbours(cells_.cellOf(a), nb);
     for (int n = 0; n < m; ++n) {
-      for (int j = cells_.head(nb[n].cell); j >= 0; j = cells_.next(j)) {
+      for (const int j : cells_.members(nb[n].cell)) {
         if (j == a || in_group_[j]) continue;
         const ParticleState o = extrapolated(j, now_);
         const double rx = s.x - o.x - nb[n].shift_x, rz = s.z - o.z - nb[n].shift_z;
@@ -193,7 +193,7 @@ void EdSimulation::wakeRestingOn(int k) {
     CellGrid::Neighbour nb[9];
     const int m = cells_.neighbours(cells_.cellOf(a), nb);
     for (int c = 0; c < m; ++c) {
-      for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+      for (const int j : cells_.members(nb[c].cell)) {
         // Riders at the bottom's own contact height are held by the bottom itself.
         if (j == a || p_[j].motion != Motion::RideBottom ||
             p_[j].ride_offset <= 0.5 * d * (1 + 1e-9))
@@ -331,7 +331,7 @@ bool EdSimulation::pinched(int i, Vec2 away, Motion rigid, int exclude) const {
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(i), nb);
   for (int c = 0; c < m; ++c) {
-    for (int j = cells_.head(nb[c].cell); j >= 0; j = cells_.next(j)) {
+    for (const int j : cells_.members(nb[c].cell)) {
       if (j == i || j == exclude || p_[j].motion != rigid) continue;
       const ParticleState o = extrapolated(j, now_);
       const double rx = o.x + nb[c].shift_x - s.x, rz = o.z + nb[c].shift_z - s.z;
