@@ -42,6 +42,10 @@ inline double fallTime(double gap, double v, double g) {
 // never grows past 15; a larger one is walked cell by cell.
 constexpr int kGatherCapacity = 15;
 
+// Up to this many partners (a dilute gas, or the 3 new cells after a crossing) they are tested
+// one by one: the filter of keptPartners pays where a prediction meets many partners.
+constexpr int kFewPartners = 4;
+
 // With the number of cells M and the block capacity known at compile time, the copying is
 // unrolled: the stencil of a prediction (9 cells, 3 after a crossing) costs no loop exits.
 template <int M, int Capacity>
@@ -76,6 +80,57 @@ int gatherPartners(const CellGrid& cells, const CellGrid::Neighbour* nb, int m, 
   if (cells.capacity() == 3) return gatherBlocks<3>(cells, nb, m, partner, via);
   if (cells.capacity() == 7) return gatherBlocks<7>(cells, nb, m, partner, via);
   return gatherBlocks<kGatherCapacity>(cells, nb, m, partner, via);
+}
+
+// Position and velocity of s relative to the flyer q at time t0, q seen through `cell` (its
+// periodic image). One definition for the filter and the test of predictPairs: the filter's
+// guarantee (no partner that could change the best event is dropped) needs the same numbers.
+struct Relative {
+  double rx, rz, vx, vz;
+};
+inline Relative relativeToFlyer(const ParticleState& s, const ParticleState& q,
+                                const CellGrid::Neighbour& cell, double g, double t0) {
+  const double dt = t0 - q.t;
+  return {s.x - (q.x + q.vx * dt) - cell.shift_x,
+          s.z - (q.z + (q.vz - 0.5 * g * dt) * dt) - cell.shift_z, s.vx - q.vx,
+          s.vz - (q.vz - g * dt)};
+}
+
+// What keptPartners needs to know of the particle being predicted and of its best event.
+struct PairFilter {
+  const ParticleState& s;
+  int i;
+  double g, d, t0, best_time;
+};
+
+// Indices k of the partners (partner[k], through cell nb[via[k]]) that could change the best
+// event of a flyer: riders (they take the general path), and flyers approaching (b < 0) on a
+// path that meets (disc >= 0) no later than the best event so far. Since f(t) = c + 2 b t + a
+// t^2 is convex, a root at tau <= T needs c + 2 b tau <= 0, so c <= -2 b T (trivially true for a
+// pair touching now, c <= 0); for c > 0 the computed root c / (-b + sqrt(disc)) is >= c / (-2 b)
+// in floating point too, and T is widened past the rounding of t0 + tau < best. Every test is
+// folded into one sum, so the loop has no branch but its exit: tested one by one, partners
+// cost the wet scene half its mispredicted branches (docs/performance.md).
+int keptPartners(const PairFilter& f, const std::vector<ParticleState>& p,
+                 const CellGrid::Neighbour* nb, const int* partner, const unsigned char* via, int n,
+                 int* kept) {
+  const double horizon = std::max(0.0, f.best_time - f.t0);
+  const double reach = horizon * (1.0 + 1e-12) + 1e-15 * std::abs(f.best_time);
+  const ParticleState& s = f.s;
+  int n_kept = 0;
+  for (int k = 0; k < n; ++k) {
+    const int j = partner[k];
+    const ParticleState& q = p[j];
+    const CellGrid::Neighbour& cell = nb[via[k]];
+    const auto [rx, rz, vx, vz] = relativeToFlyer(s, q, cell, f.g, f.t0);
+    const double b = rx * vx + rz * vz;
+    const double c = rx * rx + rz * rz - f.d * f.d;
+    const double disc = b * b - (vx * vx + vz * vz) * c;
+    const bool meets = (b < 0.0) & (disc >= 0.0) & (c <= -2.0 * b * reach);
+    kept[n_kept] = k;
+    n_kept += (j != f.i) & ((q.motion != Motion::Ballistic) | meets);
+  }
+  return n_kept;
 }
 
 }  // namespace
@@ -337,10 +392,7 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
       if (j != i) predictPairWith(i, s, speed(), j, cell, best);
       return;
     }
-    const double dt = t0 - q.t;
-    const double rx = s.x - (q.x + q.vx * dt) - cell.shift_x;
-    const double rz = s.z - (q.z + (q.vz - 0.5 * g * dt) * dt) - cell.shift_z;
-    const double vx = s.vx - q.vx, vz = s.vz - (q.vz - g * dt);
+    const auto [rx, rz, vx, vz] = relativeToFlyer(s, q, cell, g, t0);
     // Receding: never (pairCollisionTime). i itself is among the partners: one test for both,
     // without a branch of its own (the | is deliberate: two unpredictable branches cost more).
     if ((rx * vx + rz * vz >= 0.0) | (j == i)) return;
@@ -363,7 +415,17 @@ void EdSimulation::predictPairs(int i, const ParticleState& s, const CellGrid::N
   int partner[9 * kGatherCapacity];
   unsigned char via[9 * kGatherCapacity];
   const int n = gatherPartners(cells_, nb, m, partner, via);
-  for (int k = 0; k < n; ++k) test(partner[k], nb[via[k]]);
+  if (!flyer || n <= kFewPartners) {
+    for (int k = 0; k < n; ++k) test(partner[k], nb[via[k]]);
+    return;
+  }
+  // Two passes: the first keeps, without a branch, the partners that could change `best`
+  // (keptPartners); the second runs `test` on them in their order, so the result is that of
+  // testing every partner (docs/performance.md, "Partners filtered without branches").
+  int kept[9 * kGatherCapacity];
+  const PairFilter filter{s, i, g, d, t0, best.time};
+  const int n_kept = keptPartners(filter, p_, nb, partner, via, n, kept);
+  for (int k = 0; k < n_kept; ++k) test(partner[kept[k]], nb[via[kept[k]]]);
 }
 
 }  // namespace granwave
