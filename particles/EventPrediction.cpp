@@ -110,7 +110,10 @@ struct PairFilter {
 // pair touching now, c <= 0); for c > 0 the computed root c / (-b + sqrt(disc)) is >= c / (-2 b)
 // in floating point too, and T is widened past the rounding of t0 + tau < best. Every test is
 // folded into one sum, so the loop has no branch but its exit: tested one by one, partners
-// cost the wet scene half its mispredicted branches (docs/performance.md).
+// cost the wet scene half its mispredicted branches (docs/performance.md). The margins on disc
+// and c (far beyond round-off, far below any gap that matters) keep the filter on the safe
+// side where a build contracts a * b + c into fused multiply-adds differently here and in
+// pairCollisionTime; they keep a few more partners, which the test then rejects.
 int keptPartners(const PairFilter& f, const std::vector<ParticleState>& p,
                  const CellGrid::Neighbour* nb, const int* partner, const unsigned char* via, int n,
                  int* kept) {
@@ -126,7 +129,8 @@ int keptPartners(const PairFilter& f, const std::vector<ParticleState>& p,
     const double b = rx * vx + rz * vz;
     const double c = rx * rx + rz * rz - f.d * f.d;
     const double disc = b * b - (vx * vx + vz * vz) * c;
-    const bool meets = (b < 0.0) & (disc >= 0.0) & (c <= -2.0 * b * reach);
+    const bool meets = (b < 0.0) & (disc >= -1e-9 * (b * b)) &
+                       (c <= -2.0 * b * reach + kTouchingSlack * f.d * f.d);
     kept[n_kept] = k;
     n_kept += (j != f.i) & ((q.motion != Motion::Ballistic) | meets);
   }
