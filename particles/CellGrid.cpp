@@ -75,7 +75,6 @@ void CellGrid::restore(const Lists& saved) {
                                 std::to_string(n));
   // Walk every list: each particle must be reached exactly once, in the cell it names.
   std::vector<char> seen(n, 0);
-  std::vector<std::vector<int>> order(cells);
   std::size_t reached = 0;
   for (std::size_t c = 0; c < cells; ++c) {
     int previous = -1;
@@ -86,15 +85,20 @@ void CellGrid::restore(const Lists& saved) {
       seen[p] = 1;
       ++reached;
       previous = p;
-      order[c].push_back(p);
     }
   }
   if (reached != n)
     throw std::invalid_argument("cell lists: " + std::to_string(n - reached) +
                                 " particles are in no cell");
+  // Valid: fill the blocks, each cell's list in order (insert puts a particle in front, so
+  // its members go in from the last).
   std::fill(slots_.begin(), slots_.end(), 0);
-  for (std::size_t c = 0; c < cells; ++c)  // the last member first: insert puts it in front
-    for (auto p = order[c].rbegin(); p != order[c].rend(); ++p) insert(*p, static_cast<int>(c));
+  std::vector<int> members;
+  for (std::size_t c = 0; c < cells; ++c) {
+    members.clear();
+    for (int p = saved.head[c]; p >= 0; p = saved.next[p]) members.push_back(p);
+    for (auto p = members.rbegin(); p != members.rend(); ++p) insert(*p, static_cast<int>(c));
+  }
 }
 
 int CellGrid::newNeighbours(int cell, int step_x, int step_z, Neighbour out[3]) const {
