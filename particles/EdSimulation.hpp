@@ -139,8 +139,10 @@ class EdSimulation {
   void setUp(int particles);
   // prediction (EventPrediction.cpp)
   void predict(int i);
-  // Schedules i's earliest event from its earliest pair event and its own crossings and walls.
+  // Schedules i's earliest event from its earliest pair event and its own crossings and walls
+  // (the crossing given if already predicted).
   void schedule(int i, const ParticleState& s, const Event& pair);
+  void schedule(int i, const ParticleState& s, const Event& pair, const Event& crossing);
   void predictCrossing(int i, const ParticleState& s, Event& best) const;
   // First time >= now_ at which a rider's height minus its offset, z_b(t), passes u rising
   // (or falling); +inf if never.
@@ -262,7 +264,9 @@ class EdSimulation {
   // Each particle's earliest pair event at its last prediction (time -inf: not known). A cell
   // crossing leaves the trajectory unchanged, so when every pair time is exact (no particle
   // can ride a wall) it needs to test only the newly adjacent cells against this (DynamO's
-  // approach; docs/ARCHITECTURE.md, "Event calendar").
+  // approach; docs/ARCHITECTURE.md, "Event calendar"). Where particles can ride a wall, the
+  // pair search stops at the particle's next crossing, and this holds the earliest pair event
+  // before it (an event of kind None at the crossing's time if there is none).
   std::vector<Event> pair_ev_;
   bool incremental_crossings_ = false;
   EventQueue queue_;

@@ -141,19 +141,32 @@ int keptPartners(const PairFilter& f, const std::vector<ParticleState>& p,
 
 void EdSimulation::predict(int i) {
   const ParticleState s = extrapolated(i, now_);
+  Event crossing;
+  predictCrossing(i, s, crossing);
   CellGrid::Neighbour nb[9];
   const int m = cells_.neighbours(cells_.cellOf(i), nb);
+  // Unless pair events are carried over crossings, the particle is predicted afresh at its
+  // next crossing: no pair event after it can be its next event, and a pair at the same time
+  // loses to it (precedence below). The search is bounded there: keptPartners drops the
+  // partners met later, and root searches with riders stop there.
   Event pair;
+  if (!incremental_crossings_) pair.time = crossing.time;
   predictPairs(i, s, nb, m, pair);
-  schedule(i, s, pair);
+  schedule(i, s, pair, crossing);
 }
 
 void EdSimulation::schedule(int i, const ParticleState& s, const Event& pair) {
+  Event crossing;
+  predictCrossing(i, s, crossing);
+  schedule(i, s, pair, crossing);
+}
+
+void EdSimulation::schedule(int i, const ParticleState& s, const Event& pair,
+                            const Event& crossing) {
   pair_ev_[i] = pair;
   // Precedence at equal times: crossing, then walls, then pairs. The wall root finders need
   // to look no further than the earliest event found so far.
-  Event best;
-  predictCrossing(i, s, best);
+  Event best = crossing;
   predictWalls(i, s, best, std::min(best.time, pair.time));
   if (pair.time < best.time) best = pair;
   ev_[i] = best;
