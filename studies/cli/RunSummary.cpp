@@ -39,7 +39,14 @@ bool summarisePeriodDoubling(const RunSummaryInput& in, PeriodDoublingSeries& ou
   PeriodResult p;
   int discarded = 0;
   if (!summarisePeriod(in, p, discarded)) return false;
-  out = periodDoublingSeries(in.com_height, in.scene->run.phases_per_cycle, discarded);
+  // A period can be found in fewer steady cycles than one window of the series needs (the
+  // series starts at an even cycle): then the series is not determined, as in `fields`, and
+  // an interrupted short run still exits 130 with its partial file.
+  try {
+    out = periodDoublingSeries(in.com_height, in.scene->run.phases_per_cycle, discarded);
+  } catch (const std::invalid_argument&) {
+    return false;
+  }
   return true;
 }
 
