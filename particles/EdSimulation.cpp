@@ -310,7 +310,17 @@ bool EdSimulation::advanceTo(double t, const std::atomic<bool>* interrupt) {
   const double window = cfg_.collapse_window > 0 ? cfg_.collapse_window : 0.0;
   while (queue_.topTime() <= t) {
     now_ = queue_.topTime();
-    process(queue_.top());
+    const int i = queue_.top();
+    // The particles likely to come next: their states and events are requested from memory
+    // now, so that in a large system the wait overlaps this event's work
+    // (docs/performance.md, "Where the large gas waits on memory").
+    for (int k = 1; k <= 2; ++k) {
+      const int j = queue_.follower(k);
+      if (j < 0) break;
+      __builtin_prefetch(&p_[j]);
+      __builtin_prefetch(&ev_[j]);
+    }
+    process(i);
     if (++obs_.events % kPollEvents == 0) {
       checkEventBudget();
       if (interrupt && interrupt->load(std::memory_order_relaxed)) return false;

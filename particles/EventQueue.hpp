@@ -37,6 +37,9 @@ class EventQueue {
     return heap_.empty() ? kInfinity : heap_[0].key;
   }
   double time(int id) const { return key_[id]; }
+  // The entries that follow the earliest in the current bucket's heap (its children: one of
+  // them is next unless an update comes before): the particle at slot k = 1, 2, or -1.
+  int follower(int k) const { return k < static_cast<int>(heap_.size()) ? heap_[k].id : -1; }
   void update(int id, double time);
   int size() const { return static_cast<int>(key_.size()); }
 

@@ -38,6 +38,33 @@ TEST(EventQueue, EqualTimesComeOutInParticleOrder) {
   }
 }
 
+// The followers the engine prefetches: when the earliest entry leaves, the next one is one of
+// them whenever the current bucket held more than the earliest; with nothing behind it there
+// is none to name.
+TEST(EventQueue, NextEntryIsAFollowerWheneverTheCurrentBucketHasOne) {
+  const double never = std::numeric_limits<double>::infinity();
+  granwave::EventQueue single(3);
+  single.update(1, 0.5);
+  EXPECT_EQ(single.top(), 1);
+  EXPECT_EQ(single.follower(1), -1);
+
+  const int n = 500;
+  granwave::EventQueue q(n);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int id = 0; id < n; ++id) q.update(id, u(rng));
+  int named = 0;
+  for (int step = 0; step < n - 1; ++step) {
+    const int top = q.top();
+    const int f1 = q.follower(1), f2 = q.follower(2);
+    q.update(top, never);
+    if (f1 < 0) continue;  // the bucket held only the earliest: the next comes from a later one
+    ASSERT_TRUE(q.top() == f1 || q.top() == f2) << "step " << step;
+    ++named;
+  }
+  EXPECT_GT(named, n / 4);  // the test saw the case it is about
+}
+
 // Times spread over many decades (so over many calendar years and rebuilds), far-future and
 // infinite keys, popped in order as the engine does: the top gets a later time.
 TEST(EventQueue, PopsInTimeOrderAcrossYearsAndFarFutureTimes) {
