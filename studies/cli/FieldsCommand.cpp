@@ -41,15 +41,19 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
       ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Fields file (HDF5 + .xdmf); default <run>.fields.h5");
   cmd->add_option(
-      "--period", opt.period,
-      "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4");
+         "--period", opt.period,
+         "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4")
+      ->capture_default_str();
   cmd->add_option("--blocks", opt.blocks, "Independent blocks of cycles for uncertainties")
-      ->check(CLI::Range(2, 50));
-  cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number");
+      ->check(CLI::Range(2, 50))
+      ->capture_default_str();
+  cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number")
+      ->capture_default_str();
   cmd->add_option("--front-threshold", opt.front_threshold,
                   "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
       ->check(CLI::Range(0.01, 100.0))
-      ->check(finiteNumber());
+      ->check(finiteNumber())
+      ->capture_default_str();
   cmd->add_flag("--state-fields", opt.state_fields,
                 "Also average the fields over the period-1 and the period-2 windows of the "
                 "layer separately (/states; about twice the memory)");

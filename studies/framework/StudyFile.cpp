@@ -7,6 +7,8 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/NameSuggestion.hpp"
+
 namespace granwave {
 
 StudyFile StudyFile::load(const std::string& path) {
@@ -151,13 +153,15 @@ void StudyFile::rejectUnknownKeys() const {
     const std::string section(name.str());
     const toml::table* t = node.as_table();
     if (!t || !known_.count(section))
-      throw StudyError(fmt::format("{}: unknown section [{}] for a {} study; valid sections: {}",
-                                   path_, section, kind_, list(sections)));
+      throw StudyError(fmt::format(
+          "{}: unknown section [{}]{} for a {} study; valid sections: {}", path_, section,
+          didYouMean(section, {sections.begin(), sections.end()}), kind_, list(sections)));
     const auto& keys = known_.at(section);
     for (const auto& [key, value] : *t) {
       if (!keys.count(std::string(key.str())))
-        throw StudyError(fmt::format("{}: unknown key '{}.{}'; valid keys in [{}]: {}", path_,
-                                     section, key.str(), section, list(keys)));
+        throw StudyError(fmt::format(
+            "{}: unknown key '{}.{}'{}; valid keys in [{}]: {}", path_, section, key.str(),
+            didYouMean(key.str(), {keys.begin(), keys.end()}), section, list(keys)));
     }
   }
 }
