@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "scene/NameSuggestion.hpp"
+#include "studies/framework/InstalledFiles.hpp"
 
 namespace granwave {
 
@@ -133,12 +134,17 @@ std::vector<std::string> StudyFile::strings(std::string_view section, std::strin
 
 std::string StudyFile::scenePath(std::string_view section, std::string_view key,
                                  std::string fallback) {
-  std::string p = string(section, key, std::move(fallback));
-  std::filesystem::path path(p);
-  if (path.is_relative()) path = std::filesystem::path(path_).parent_path() / path;
-  if (!std::filesystem::is_regular_file(path))
-    fail(section, key, fmt::format("file {} does not exist", path.string()));
-  return path.lexically_normal().string();
+  const std::filesystem::path given(string(section, key, std::move(fallback)));
+  std::vector<std::filesystem::path> places{given};
+  if (given.is_relative())
+    places = {std::filesystem::path(path_).parent_path() / given,
+              std::filesystem::path(installedFile("studies")) / given};
+  std::string looked;
+  for (const std::filesystem::path& place : places) {
+    if (std::filesystem::is_regular_file(place)) return place.lexically_normal().string();
+    looked += (looked.empty() ? "" : " and ") + place.lexically_normal().string();
+  }
+  fail(section, key, fmt::format("no such file (looked in {})", looked));
 }
 
 void StudyFile::rejectUnknownKeys() const {
