@@ -6,7 +6,8 @@ must find the run file's frames (read with h5py):
   extxyz mdanalysis    positions to float32 (MDAnalysis's XYZ reader reads no more)
   gsd gsd              gsd.hoomd: step, box, N, type, mass, diameter, positions and velocities
                        (container frame, float32, bit for bit), time, plate height and
-                       angular velocities (float64, bit for bit); the file layer's header
+                       angular velocities (float64, bit for bit); the file layer's header;
+                       the pure-Python reader gsd.pygsd too
   gsd mdanalysis       MDAnalysis's GSD reader: frames, steps, box, positions, masses
   lammps-dump ase      ase.io lammps-dump-text with units="si": positions, velocities, cell,
                        its origin (the plate) and periodicity, converted to ASE's units
@@ -124,6 +125,13 @@ def gsd_gsd(path, run, c):
         header = (tuple(f.gsd_version), f.schema, tuple(f.schema_version))
         if header != ((2, 0), "hoomd", (1, 4)) or not f.application.startswith("granwave "):
             c.problems.append(f"header {header}, application {f.application}")
+    # gsd's pure-Python reader checks the index and namelist on its own.
+    import gsd.pygsd
+    with open(path, "rb") as raw, gsd.pygsd.GSDFile(raw) as f:
+        pure = gsd.hoomd.HOOMDTrajectory(f)
+        c.equal("frames (pure-Python reader)", len(pure), len(run.k))
+        c.equal("last frame's positions (pure-Python reader)", pure[-1].particles.position,
+                gsd_position(run, len(run.k) - 1))
     with gsd.hoomd.open(path, mode="rb") as t:
         if not c.frames(len(t), run):
             return f"gsd {gsd.__version__}"
