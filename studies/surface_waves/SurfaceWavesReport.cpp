@@ -38,8 +38,9 @@ std::string method(const SurfaceWavesConfig& c) {
       "(coarse_grain/LayerSurface.hpp). Its spectrum is taken over windows of 10 steady "
       "cycles: per surface mode the part that alternates every cycle (f/2 family), the part "
       "that repeats every cycle (f family) and the rest (coarse_grain/SurfaceWaveSpectrum.hpp). "
-      "A window has a wave when its strongest f/2 mode has a crest height of at least 0.5 d, "
-      "three times its noise floor, and at least half of its locked power at f/2. Errors: "
+      "A window has a wave when its strongest f/2 mode has an amplitude (that of the f/2 "
+      "sinusoid of the same power, noise power removed) of at least 0.5 d and three noise "
+      "floors, and at least half of its locked power at f/2. Errors: "
       "standard errors over windows, combined over seeds with the seeds' scatter. The "
       "stability study's detector (one phase of 16 cycles, yes/no) is shown beside it.",
       variants, c.cycles, [&] {
@@ -91,7 +92,8 @@ void addDissipation(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, R
           "pair impacts, e_eff = sqrt(1 - loss / normal impact energy) over the impacts the "
           "restitution law decided (TC-elastic ones excluded), and the energy it loses per cycle "
           "over its mean kinetic energy (all collisions). Spearman's rank correlation of Gamma_c "
-          "with e_eff over the {} variants with an onset: {}.",
+          "with e_eff over the {} variants with an onset: {} (undefined when the onsets tie, "
+          "i.e. fall between the same two Gamma of the grid).",
           formatCompact(c.frequencies.front()), formatCompact(c.dissipation_gamma),
           r.ranked_variants, formatNumber(r.rank_correlation, 2)));
   Figure fig;
@@ -165,7 +167,7 @@ void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& 
   addOnset(c, r, report);
   ReportSection& spectra = report.section(
       "Spectra of the strongest waves",
-      "For each variant, the run with the largest f/2 crest height: its surface over the last "
+      "For each variant, the run with the largest f/2 amplitude: its surface over the last "
       "cycles, its power per mode split by temporal response, and the temporal spectrum of its "
       "dominant mode.");
   addSpectra(r, spectra);
@@ -176,8 +178,10 @@ void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& 
   addWidthScan(c, r, widths);
   ReportSection& dispersion = report.section(
       "Dispersion relation against published granular Faraday waves",
-      "Umbanhowar & Swinney (Physica A 288, 344 (2000)) found for vertically vibrated layers "
-      "lambda / H = 1.0 + 1.1 (f sqrt(H/g))^(-1.32 +- 0.03), with H the layer depth. Melo, "
+      "Umbanhowar & Swinney (Physica A 288, 344 (2000)) fitted the wavelengths of vertically "
+      "vibrated layers as lambda / H = 1.0 + 1.1 (f sqrt(H/g))^(-1.32 +- 0.03), H the layer "
+      "depth (the fit as it is widely quoted; its coefficients were not checked against the "
+      "paper's text for this report). Melo, "
       "Umbanhowar & Swinney (PRL 72, 172 (1994)) found the standing waves at f/2 from a "
       "critical acceleration with a gravity-wave-like dispersion and a cutoff at the grain "
       "size; Bizon et al. (PRL 80, 57 (1998)) reproduced patterns and wavelengths with "
