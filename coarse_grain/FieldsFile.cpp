@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "coarse_grain/SurfaceWavesFile.hpp"
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
 
@@ -274,6 +275,7 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   }
 
   writePatterns(f, a.patterns);
+  writeSurfaceWaves(f, a.surface);
   writePeriodDoubling(f, a.context.period_doubling);
 
   f.createGroup("/parameters");

@@ -107,11 +107,13 @@ int runFields(const FieldsOptions& opt) {
   std::optional<StatePhaseAverager> states;
   if (opt.state_fields) states.emplace(cfg);
   PatternSampler patterns({M});
+  SurfaceRecorder surface(surfaceRecorderConfig(scene));
   for (std::size_t i = 0; i < run.frameCount(); ++i) {
     const Snapshot s = run.frame(i);
     averager.observe(s);
     if (states) states->observe(s);
     patterns.observe(s);
+    surface.observe(s);
   }
 
   FrontOptions fronts;
@@ -122,6 +124,7 @@ int runFields(const FieldsOptions& opt) {
   if (states) addStateFields(a, *states);
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
                                 scene.particles.diameter, scene.container.periodic_x);
+  a.surface = surfaceWaves(surface, averager);
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);

@@ -115,6 +115,8 @@ class SimulationRun {
           std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
       accumulating_.emplace_back("phase_averager", averager_.get());
       accumulating_.emplace_back("patterns", patterns_.get());
+      surface_ = std::make_unique<SurfaceRecorder>(surfaceRecorderConfig(scene_));
+      accumulating_.emplace_back("surface", surface_.get());
       impacts_ = std::make_unique<PooledPairImpacts>(*averager_, scene_.drive.frequency);
       accumulating_.emplace_back("pair_impacts", &impacts_->histogram);
     }
@@ -156,6 +158,7 @@ class SimulationRun {
     if (averager_) {
       sim_->addObserver(averager_.get());
       sim_->addObserver(patterns_.get());
+      sim_->addObserver(surface_.get());
       sim_->addObserver(impacts_.get());  // after the averager: its first pooled cycle
       sim_->setPairImpactObserver(&impacts_->histogram);
     }
@@ -336,6 +339,7 @@ class SimulationRun {
     if (states_) addStateFields(a, *states_);
     a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
                                   scene_.particles.diameter, scene_.container.periodic_x);
+    a.surface = surfaceWaves(*surface_, *averager_);
     return a;
   }
 
@@ -347,6 +351,7 @@ class SimulationRun {
   CenterOfMassSeries com_;
   std::unique_ptr<PhaseAverager> averager_;
   std::unique_ptr<PatternSampler> patterns_;
+  std::unique_ptr<SurfaceRecorder> surface_;
   std::unique_ptr<StatePhaseAverager> states_;
   std::unique_ptr<PooledPairImpacts> impacts_;
   NamedCheckpointables accumulating_{{"center_of_mass", &com_}};
