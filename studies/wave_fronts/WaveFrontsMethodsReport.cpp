@@ -120,7 +120,7 @@ std::string hydroPeriod(const ModelHierarchy& m, const std::string& key) {
 }
 
 // Does the continuum double where the particles do, smooth disks against rough particles
-// (issue: the particles' friction carries about half their dissipation)?
+// (the question matters because the particles' friction carries about half their dissipation)?
 // "simplest model that reproduces it: X (decided at 5 seeds; the same verdict in 97 % of 200
 // bootstrap resamples)", or undecided with the verdicts the resamples gave.
 std::string verdictText(const VerdictStability& v) {

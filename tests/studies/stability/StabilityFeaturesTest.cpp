@@ -130,8 +130,8 @@ TEST(StabilityFeatures, DifferencesCountThePaperSymbolsNotThePeriod) {
   EXPECT_EQ(verdicts(g).at("differences_shrink_with_f"), "no");
 }
 
-// The layer the issue describes at 10 Hz, Gamma = 6-7: liquid-like by the bonds over 15 cycles,
-// ordered and compact in every cycle. Each criterion answers its own checks.
+// The layer measured at 10 Hz, Gamma = 6-7 (docs/classification.md): liquid-like by the bonds
+// over 15 cycles, ordered and compact in every cycle. Each criterion answers its own checks.
 TEST(StabilityFeatures, EachSolidCriterionAnswersTheStateChecksOnItsOwn) {
   const std::vector<std::string> states[2][2] = {{{C, L, L, L, L}, {C, C, C, C, C}},
                                                  {{C, L, L, L, L}, {C, C, C, C, C}}};
