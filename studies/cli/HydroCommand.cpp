@@ -108,42 +108,41 @@ void plateFrameFields(const hydro::HydroResult& r, double mass, HydroRunContent&
   }
 }
 
-// Lab-frame profiles on the coarse-graining grid, and the same fronts as `fields` finds.
-void labFrameFields(const Scene& scene, const SceneDerived& dv, const hydro::HydroResult& r,
-                    int samples_per_cycle, HydroRunContent& c) {
+// Lab-frame profiles on the coarse-graining grid, and the same fronts as `fields` finds. The
+// window holds whole cycles sampled at k/M, k = 1..M per cycle.
+PhaseProfiles labFrameProfiles(const Scene& scene, const SceneDerived& dv,
+                               const hydro::HydroResult& r, int samples_per_cycle) {
   const FieldGrid grid = FieldGrid::forContainer(scene.container.width, scene.container.height,
                                                  dv.amplitude, scene.particles.diameter);
-  PhaseFields lab;
+  PhaseProfiles p;
+  PhaseFields& lab = p.pooled;
   lab.phases = static_cast<int>(r.window.size());
   lab.nz = grid.nz;
   lab.nx = 1;
   const double dt = 1.0 / (samples_per_cycle * scene.drive.frequency);
+  const int window_cycles = r.periodic ? r.period : 2;  // HydroSimulation's window
   for (const hydro::HydroPhase& ph : r.window) {
     const double vb = dv.amplitude * dv.omega * std::cos(dv.omega * ph.time);
     mapToLab(ph, scene.container.height, grid, vb, dv.mass, lab.profile_area_fraction,
              lab.profile_temperature, lab.profile_velocity_z);
-    c.plate_height.push_back(ph.plate_height);
-    c.center_of_mass_height.push_back(ph.center_of_mass_height + ph.plate_height);
-    c.time.push_back(ph.time - r.window.front().time + dt);
+    p.plate_height.push_back(ph.plate_height);
+    lab.center_of_mass_height.push_back(ph.center_of_mass_height + ph.plate_height);
+    p.time.push_back(ph.time - r.window.front().time + dt);
+    p.phase.push_back(static_cast<double>(p.phase.size() + 1) * window_cycles / lab.phases);
   }
-  lab.profile_rms_velocity_x.assign(lab.profile_temperature.size(), kNaN);
-  c.fronts = frontEpisodes(lab, {}, grid.z0, grid.wz, dv.T0, dt, {}, c.plate_height);
-  c.rows = static_cast<std::size_t>(grid.nz);
-  for (std::size_t j = 0; j < c.rows; ++j) c.lab_z.push_back(grid.zCentre(static_cast<int>(j)));
-  c.front_height =
-      frontHeights(lab, grid.z0, grid.wz, dv.T0, FrontOptions{}, &c.front_peak_temperature);
-  c.lab_area_fraction = std::move(lab.profile_area_fraction);
-  c.lab_temperature = std::move(lab.profile_temperature);
-  c.lab_velocity_z = std::move(lab.profile_velocity_z);
+  p.fronts = frontEpisodes(lab, {}, grid.z0, grid.wz, dv.T0, dt, {}, p.plate_height);
+  for (int j = 0; j < grid.nz; ++j) p.z.push_back(grid.zCentre(j));
+  p.front_height =
+      frontHeights(lab, grid.z0, grid.wz, dv.T0, FrontOptions{}, &p.front_peak_temperature);
+  return p;
 }
 
 HydroRunContent runContent(const Scene& scene, const SceneDerived& dv, const hydro::HydroResult& r,
                            const hydro::HydroRunOptions& ro) {
   HydroRunContent c;
-  c.phases = r.window.size();
   c.cells = static_cast<std::size_t>(scene.hydro.cells);
   plateFrameFields(r, dv.mass, c);
-  labFrameFields(scene, dv, r, ro.samples_per_cycle, c);
+  c.lab = labFrameProfiles(scene, dv, r, ro.samples_per_cycle);
   c.rtol = ro.cvode.rtol;
   c.cycles = r.cycles;
   c.period = r.period;
@@ -228,7 +227,7 @@ int runHydro(const HydroOptions& opt) {
   const hydro::HydroResult r = sim.run();
   const HydroRunContent content = runContent(scene, dv, r, ro);
   writeHydroRunFile(out, content);
-  printSummary(opt, scene, r, content.fronts, ro.samples_per_cycle, out);
+  printSummary(opt, scene, r, content.lab.fronts, ro.samples_per_cycle, out);
   return 0;
 }
 

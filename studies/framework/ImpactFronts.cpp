@@ -5,25 +5,26 @@
 
 namespace granwave {
 
-ImpactFronts impactFronts(const std::vector<Front>& fronts) {
-  std::vector<const Front*> impact;
-  for (const Front& f : fronts)
+ImpactFronts impactFronts(const PhaseProfiles& p) {
+  std::vector<const FrontEpisode*> impact;
+  for (const FrontEpisode& f : p.fronts)
     if (f.from_impact && std::isfinite(f.speed)) impact.push_back(&f);
   ImpactFronts r;
   r.count = static_cast<int>(impact.size());
   if (impact.empty()) return r;
-  std::sort(impact.begin(), impact.end(),
-            [](const Front* a, const Front* b) { return a->peak < b->peak; });
-  const Front& weak = *impact.front();
-  const Front& strong = *impact.back();
-  r.weak = {weak.speed, weak.error};
-  r.strong = {strong.speed, strong.error};
-  r.weak_start = weak.start;
-  r.strong_start = strong.start;
+  std::sort(impact.begin(), impact.end(), [](const FrontEpisode* a, const FrontEpisode* b) {
+    return a->peak_temperature < b->peak_temperature;
+  });
+  const FrontEpisode& weak = *impact.front();
+  const FrontEpisode& strong = *impact.back();
+  r.weak = {weak.speed, weak.speed_error};
+  r.strong = {strong.speed, strong.speed_error};
+  r.weak_start = p.start(weak);
+  r.strong_start = p.start(strong);
   r.weak_phase = weak.first_phase;
   r.strong_phase = strong.first_phase;
   std::vector<Measurement> all;
-  for (const Front* f : impact) all.push_back({f->speed, f->error});
+  for (const FrontEpisode* f : impact) all.push_back({f->speed, f->speed_error});
   r.all = combine(all);
   return r;
 }
@@ -45,14 +46,15 @@ ImpactFronts combineImpactFronts(const std::vector<ImpactFronts>& runs) {
   return r;
 }
 
-std::vector<double> centerOfMassMinimumPhases(const Profiles& p, int cycles) {
+std::vector<double> centerOfMassMinimumPhases(const PhaseProfiles& p, int cycles) {
   std::vector<double> out;
-  if (cycles <= 0 || p.phases < cycles) return out;
-  const int per = p.phases / cycles;
+  if (cycles <= 0 || p.phases() < cycles) return out;
+  const int per = p.phases() / cycles;
+  const std::vector<double>& com = p.pooled.center_of_mass_height;
   for (int c = 0; c < cycles; ++c) {
     int best = c * per;
     for (int k = c * per; k < (c + 1) * per; ++k)
-      if (p.com[k] < p.com[best]) best = k;
+      if (com[k] < com[best]) best = k;
     out.push_back(p.phase[best] - std::floor(p.phase[best]));
   }
   return out;

@@ -6,8 +6,8 @@
 // front in the window it stands for both.
 #include <vector>
 
+#include "coarse_grain/PhaseProfiles.hpp"
 #include "studies/framework/Measurement.hpp"
-#include "studies/run_files/RunOutputs.hpp"
 
 namespace granwave {
 
@@ -20,12 +20,13 @@ struct ImpactFronts {
   static constexpr double kNoPhase = -1;
 };
 
-ImpactFronts impactFronts(const std::vector<Front>& fronts);
+// The run's fronts (p.fronts), their starts at p's phases.
+ImpactFronts impactFronts(const PhaseProfiles& p);
 // Over seeds (or repeated runs): each field combined with granwave::combine.
 ImpactFronts combineImpactFronts(const std::vector<ImpactFronts>& runs);
 
 // The paper's collision time (Sec. IV, Fig. 6a): t/T of the lowest centre-of-mass point,
 // one per cycle of the window (reduced to [0, 1)).
-std::vector<double> centerOfMassMinimumPhases(const Profiles& p, int cycles_in_window);
+std::vector<double> centerOfMassMinimumPhases(const PhaseProfiles& p, int cycles_in_window);
 
 }  // namespace granwave

@@ -28,7 +28,7 @@ void writeRunCosts(const RunSet& runs, h5::File& f, Report& report) {
         work_value = static_cast<double>(l.last_step);
         w = fmt::format("{:.3g} time steps", work_value);
       } else if (hydro) {
-        const HydroFields h = readHydroFields(r.hydroPath());
+        const HydroRunContent h = readHydroRunFile(r.hydroPath());
         work_value = static_cast<double>(h.steps);
         w = fmt::format("{} steps / {} RHS", h.steps, h.rhs_evals);
       } else {

@@ -12,18 +12,6 @@ namespace granwave {
 
 namespace {
 
-FrontProfiles profilesOf(const Profiles& p, const std::vector<double>& density,
-                         const std::vector<double>& velocity, std::size_t offset) {
-  FrontProfiles f;
-  f.phases = p.phases;
-  f.nz = p.nz;
-  f.z = p.z;
-  const std::size_t n = static_cast<std::size_t>(p.phases) * p.nz;
-  f.density.assign(density.begin() + offset, density.begin() + offset + n);
-  f.velocity.assign(velocity.begin() + offset, velocity.begin() + offset + n);
-  return f;
-}
-
 // An episode counts when the bootstrap (if any) finds it in at least half of its resamples;
 // `counted[k]` gets episode k's speed, or stays invalid.
 VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
@@ -61,25 +49,24 @@ VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
 
 }  // namespace
 
-VelocityFronts velocityFronts(const ParticleFields& p) {
-  const double dt = p.cycles_per_window / (p.frequency * p.phases);
-  const FrontProfiles pooled = profilesOf(p, p.area_fraction, p.velocity_z, 0);
+VelocityFronts velocityFronts(const FieldsRecord& r) {
+  const PhaseProfiles& p = r.profiles;
+  const double dt = r.cycles_per_window / (r.context.frequency * p.phases());
+  const FrontProfiles pooled = frontProfiles(p.pooled, p.z);
   std::vector<FrontProfiles> blocks;
-  const std::size_t per_block = static_cast<std::size_t>(p.phases) * p.nz;
-  for (int b = 0; b < p.blocks; ++b)
-    blocks.push_back(profilesOf(p, p.block_area_fraction, p.block_velocity_z, b * per_block));
+  for (const PhaseFields& b : p.blocks) blocks.push_back(frontProfiles(b, p.z));
   const std::vector<TrackedFront> tracked = trackWithBootstrap(pooled, blocks, dt);
   std::vector<Measurement> counted;
   VelocityFronts v = summarise(tracked, &counted);
   // Weak and strong: the T~g-peak impact fronts as ImpactFronts ranks them, each matched to
   // the velocity-jump episode that starts nearest, within 3 phases (the bootstrap's matching
   // rule); an unmatched, unresolved or dropped episode leaves it invalid.
-  const ImpactFronts ranked = impactFronts(p.fronts);
+  const ImpactFronts ranked = impactFronts(p);
   if (ranked.count == 0) return v;
   std::vector<int> starts;
   for (const TrackedFront& f : tracked) starts.push_back(f.first_phase);
   auto matched = [&](int phase) {
-    const int k = nearestEpisode(starts, phase, p.phases, 3);
+    const int k = nearestEpisode(starts, phase, p.phases(), 3);
     return k < 0 ? Measurement{} : counted[static_cast<std::size_t>(k)];
   };
   v.weak = matched(ranked.weak_phase);
@@ -100,8 +87,8 @@ int nearestEpisode(const std::vector<int>& starts, int phase, int phases, int wi
   return best;
 }
 
-VelocityFronts velocityFronts(const Profiles& p, double phase_dt) {
-  return summarise(trackFronts(profilesOf(p, p.area_fraction, p.velocity_z, 0), phase_dt));
+VelocityFronts velocityFronts(const PhaseProfiles& p, double phase_dt) {
+  return summarise(trackFronts(frontProfiles(p.pooled, p.z), phase_dt));
 }
 
 VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {

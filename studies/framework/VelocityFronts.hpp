@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "studies/framework/Measurement.hpp"
-#include "studies/run_files/RunOutputs.hpp"
 
 namespace granwave {
 
@@ -29,10 +29,11 @@ struct VelocityFronts {
 // than `within` phases away; else -1.
 int nearestEpisode(const std::vector<int>& starts, int phase, int phases, int within);
 
-// Particles: time between phases from the run's frequency and window.
-VelocityFronts velocityFronts(const ParticleFields& p);
+// Particles: time between phases from the run's frequency and window; errors from a bootstrap
+// over its blocks of cycles.
+VelocityFronts velocityFronts(const FieldsRecord& particles);
 // Hydro (lab-frame profiles), `phase_dt` the time between its phases (s).
-VelocityFronts velocityFronts(const Profiles& p, double phase_dt);
+VelocityFronts velocityFronts(const PhaseProfiles& p, double phase_dt);
 // Over seeds: the speeds (and weak, strong) combined (granwave::combine: the seed scatter
 // enlarges the error),
 // lower bounds by their smallest, the reasons kept when no seed has a speed.

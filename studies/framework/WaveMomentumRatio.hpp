@@ -5,8 +5,8 @@
 // wet layer's strong impact front for `wave_duration` cycles. Rows where either layer is more
 // dilute than min_area_fraction, or the wet RMS is below min_rms, are left out. The paper
 // gives 2.17 +- 0.56 (mean and spread of r~_x over the wave).
+#include "coarse_grain/FieldsReader.hpp"
 #include "studies/framework/Measurement.hpp"
-#include "studies/run_files/RunOutputs.hpp"
 
 namespace granwave {
 
@@ -19,7 +19,7 @@ struct WaveRatioOptions {
 
 // value: mean of r~_x over the wave phases; error: its spread (standard deviation) over them.
 // NaN when the fields do not match (phases, rows) or no row qualifies.
-Measurement waveMomentumRatio(const ParticleFields& dry, const ParticleFields& wet,
+Measurement waveMomentumRatio(const FieldsRecord& dry, const FieldsRecord& wet,
                               const WaveRatioOptions& options);
 
 }  // namespace granwave

@@ -6,7 +6,6 @@
 #include <cmath>
 
 #include "studies/framework/StudyResults.hpp"
-#include "studies/run_files/HydroRunFile.hpp"
 
 namespace granwave {
 
@@ -22,17 +21,18 @@ PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   for (int seed : c.seeds) {
     auto p = particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("seed {}", seed)));
     if (!p) continue;
-    per_seed.push_back(impactFronts(p->fronts));
+    per_seed.push_back(impactFronts(p->profiles));
     tracked.push_back(velocityFronts(*p));
-    const double jump =
-        PaperLaw::kPeakJumpSpeed * p->cycles_per_window / (p->frequency * p->phases);
-    for (const Front& f : p->fronts) {
+    const double jump = PaperLaw::kPeakJumpSpeed * p->cycles_per_window /
+                        (p->context.frequency * p->profiles.phases());
+    for (const FrontEpisode& f : p->profiles.fronts) {
       if (!f.from_impact) continue;
       ++out.peak_fronts;
-      out.peak_jumps += peakJumps(*p, f, jump);
+      out.peak_jumps += peakJumps(p->profiles, f, jump);
     }
-    for (double m : centerOfMassMinimumPhases(*p, p->cycles_per_window)) minima.push_back(m);
-    out.periods.push_back(p->layer_period);
+    for (double m : centerOfMassMinimumPhases(p->profiles, p->cycles_per_window))
+      minima.push_back(m);
+    out.periods.push_back(p->context.layer_period);
     if (seed == c.seeds.front()) out.seed1 = p;
     if (!out.first) out.first = std::move(p);
   }
@@ -53,9 +53,9 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
   SweepPoint s;
   if (auto p = particleFields(runs, particle_label)) {
     s.ed_cpu_per_cycle = runs.get(particle_label).cpu / particle_cycles;
-    s.ed = impactFronts(p->fronts).all;
-    s.collision_phase = meanPhase(centerOfMassMinimumPhases(*p, p->cycles_per_window));
-    s.layer_period = p->layer_period;
+    s.ed = impactFronts(p->profiles).all;
+    s.collision_phase = meanPhase(centerOfMassMinimumPhases(p->profiles, p->cycles_per_window));
+    s.layer_period = p->context.layer_period;
   }
   const HydroOutcome h = hydroOutcome(runs, hydro_label);
   s.hydro_ok = h.fields.has_value();
@@ -108,7 +108,7 @@ CostAccuracy costAccuracy(const WaveFrontsConfig& c, const RunSet& runs, const P
     row.duration = dur;
     row.pooled_cycles = p->pooled_cycles;
     row.cpu = runs.get(label).cpu;
-    row.speed = impactFronts(p->fronts).all;
+    row.speed = impactFronts(p->profiles).all;
     row.error = row.speed.error;
     out.ed_cpu.push_back(row.cpu);
     out.ed_error.push_back(row.error);
@@ -272,10 +272,10 @@ double meanPhase(const std::vector<double>& v) {
   return m <= 0.5 ? m + 1 : m;
 }
 
-std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label) {
+std::optional<FieldsRecord> particleFields(const RunSet& runs, const std::string& label) {
   const RunRecord& r = runs.get(label);
   if (!r.ok) return std::nullopt;
-  return readParticleFields(r.fieldsPath());
+  return readFieldsFile(r.fieldsPath());
 }
 
 HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
@@ -286,27 +286,28 @@ HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
     h.failure = r.message;
     return h;
   }
-  h.fields = readHydroFields(r.hydroPath());
-  h.fronts = impactFronts(h.fields->fronts);
-  const int cycles = h.fields->periodic ? h.fields->period : 2;
-  h.collision_phase = meanPhase(centerOfMassMinimumPhases(*h.fields, cycles));
+  h.fields = readHydroRunFile(r.hydroPath());
+  h.fronts = impactFronts(h.fields->lab);
+  h.collision_phase = meanPhase(centerOfMassMinimumPhases(h.fields->lab, h.fields->windowCycles()));
   return h;
 }
 
-bool peakJumps(const Profiles& p, const Front& f, double limit) {
-  if (p.phases <= 1 || p.front.size() != static_cast<std::size_t>(p.phases)) return false;
-  const int steps = ((f.last_phase - f.first_phase) % p.phases + p.phases) % p.phases;
+bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit) {
+  const int n = p.phases();
+  if (n <= 1 || p.front_height.size() != static_cast<std::size_t>(n)) return false;
+  const int steps = ((f.last_phase - f.first_phase) % n + n) % n;
   for (int k = 0; k < steps; ++k) {
-    const double a = p.front[static_cast<std::size_t>((f.first_phase + k) % p.phases)];
-    const double b = p.front[static_cast<std::size_t>((f.first_phase + k + 1) % p.phases)];
+    const double a = p.front_height[static_cast<std::size_t>((f.first_phase + k) % n)];
+    const double b = p.front_height[static_cast<std::size_t>((f.first_phase + k + 1) % n)];
     if (b - a > limit) return true;  // NaN (no peak) compares false
   }
   return false;
 }
 
 VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency) {
-  if (!h.fields || h.fields->phases <= 1) return {};
-  return velocityFronts(*h.fields, (h.fields->phase[1] - h.fields->phase[0]) / frequency);
+  if (!h.fields || h.fields->lab.phases() <= 1) return {};
+  const PhaseProfiles& lab = h.fields->lab;
+  return velocityFronts(lab, (lab.phase[1] - lab.phase[0]) / frequency);
 }
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {

@@ -14,7 +14,7 @@
 #include "studies/framework/StateShare.hpp"
 #include "studies/framework/Study.hpp"
 #include "studies/framework/VelocityFronts.hpp"
-#include "studies/run_files/RunOutputs.hpp"
+#include "studies/run_files/HydroRunFile.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -25,7 +25,7 @@ inline constexpr double kPaperCollisionDry = 0.92, kPaperCollisionWet = 0.90;
 
 // A hydro run's outcome: its fields and fronts, or why it failed.
 struct HydroOutcome {
-  std::optional<HydroFields> fields;
+  std::optional<HydroRunContent> fields;
   std::string failure;
   ImpactFronts fronts;
   // The velocity-jump front (VelocityFronts.hpp), which the model hierarchy compares; set by
@@ -41,10 +41,10 @@ struct PaperLaw {
   int seeds_used = 0;
   std::vector<int> periods;  // layer period of each finished seed
   double collision_phase = NAN;
-  std::optional<ParticleFields> first;  // the first finished seed (fronts, centre of mass)
-  std::optional<ParticleFields> seed1;  // the first seed listed, if finished (profiles)
-  HydroOutcome hydro[2];                // velocity-dependent closure, constant e_eff
-  VelocityFronts tracked;               // velocity-jump fronts, combined over the seeds
+  std::optional<FieldsRecord> first;  // the first finished seed (fronts, centre of mass)
+  std::optional<FieldsRecord> seed1;  // the first seed listed, if finished (profiles)
+  HydroOutcome hydro[2];              // velocity-dependent closure, constant e_eff
+  VelocityFronts tracked;             // velocity-jump fronts, combined over the seeds
   // Impact fronts of the T~g peak over the seeds, and those whose peak rises between two
   // phases faster than kPeakJumpSpeed (2.5 times the fastest front the paper reports): a jump
   // to another maximum, not a travelling front.
@@ -243,8 +243,8 @@ HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label);
 // none without fields).
 VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency);
 // Does the T~g peak of front `f` rise by more than `limit` (m) between two of its phases?
-bool peakJumps(const Profiles& p, const Front& f, double limit);
-std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label);
+bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit);
+std::optional<FieldsRecord> particleFields(const RunSet& runs, const std::string& label);
 FailureMap analyseFailures(const WaveFrontsConfig& config, const RunSet& runs);
 // The seeds of the paper's scene that ran: the study's, then any added for an undecided
 // verdict (WaveFrontsVerdicts.cpp).

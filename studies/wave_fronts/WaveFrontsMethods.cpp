@@ -10,6 +10,7 @@
 #include "studies/framework/FailureReason.hpp"
 #include "studies/framework/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
+#include "studies/run_files/RunOutputs.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
 
 namespace granwave {
@@ -88,7 +89,7 @@ FailureCase particleFailure(const RunSet& runs, int law, double gamma) {
       WaveFrontsConfig::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))));
   f.ok = r.ok;
   if (r.ok) {
-    f.period = readParticleFields(r.fieldsPath()).layer_period;
+    f.period = readFieldsFile(r.fieldsPath()).context.layer_period;
   } else {
     f.failure = r.message;
     f.collapse_time = collapseTime(r.message);
@@ -104,8 +105,8 @@ FailureCase hydroFailure(const RunSet& runs, int law, double gamma, int cells, d
   f.failure = h.failure;
   if (f.ok) {
     f.periodic = h.fields->periodic;
-    f.period = h.fields->period;
-    f.cycles = h.fields->cycles;
+    f.period = static_cast<int>(h.fields->period);
+    f.cycles = static_cast<int>(h.fields->cycles);
     f.regime = h.fields->regime;
   }
   return f;
@@ -204,9 +205,13 @@ ModelInputs readModelInputs(const WaveFrontsConfig& c, const RunSet& runs, int l
           WaveFrontsConfig::particleRun(law, fmt::format("{}seed {}", tag, sd));
       SeedRun r;
       if (auto p = particleFields(runs, label)) {
-        const StateSeries st = readStateSeries(runs.get(label).fieldsPath());
-        r = {true,         velocityFronts(*p).speed, p->layer_period,
-             st.windows(), st.period2_windows,       st.effective_windows};
+        const PeriodDoublingSeries& st = p->context.period_doubling;
+        r = {true,
+             velocityFronts(*p).speed,
+             p->context.layer_period,
+             static_cast<int>(st.f2_strength.size()),
+             period2Windows(st),
+             st.effective_windows};
       }
       in.particles[tag].push_back(r);
     }
@@ -240,7 +245,7 @@ ModelHierarchy judgeModels(const WaveFrontsConfig& c, const ModelInputs& in, int
       mc.failure = "failed: " + shortReason(h.failure);
       if (h.fields) {
         mc.speed = h.tracked;
-        const int period = h.fields->periodic ? h.fields->period : 0;
+        const int period = h.fields->periodic ? static_cast<int>(h.fields->period) : 0;
         mc.periods = period ? std::to_string(period) : "none";
         mc.share = exactStateShare(period);
       }
@@ -274,15 +279,16 @@ LammpsComparison analyseLammps(const WaveFrontsConfig& c, const RunSet& runs, co
   out.ed_rate = ed_run.ok ? ed_run.cpu / c.duration : NAN;
   if (dry.seed1) {
     double mean = 0;
-    for (double z : dry.seed1->com) mean += z / d / dry.seed1->phases;
-    out.ed = {true, out.ed_rate, mean, dry.seed1->layer_period,
-              impactFronts(dry.seed1->fronts).all};
+    const PhaseProfiles& p = dry.seed1->profiles;
+    for (double z : p.pooled.center_of_mass_height) mean += z / d / p.phases();
+    out.ed = {true, out.ed_rate, mean, dry.seed1->context.layer_period, impactFronts(p).all};
   }
   if (const HydroOutcome& h = dry.hydro[0]; h.fields) {
     double mean = 0;
-    for (double z : h.fields->com) mean += z / d / h.fields->phases;
+    for (double z : h.fields->lab.pooled.center_of_mass_height)
+      mean += z / d / h.fields->lab.phases();
     out.hydro = {true, h.cpu / (h.fields->cycles / c.scenes.base[0].drive.frequency), mean,
-                 h.fields->period, h.fronts.all};
+                 static_cast<int>(h.fields->period), h.fronts.all};
   }
   const RunRecord& r = runs.get(c.lammpsRun());
   out.ok = r.ok;

@@ -347,9 +347,9 @@ void lammpsSection(const WaveFrontsConfig& c, const LammpsComparison& l, const P
   fig.ylabel = "z_CM / d (lab frame)";
   fig.series.push_back(lineSeries(l.folded_phase, l.folded_height, "LAMMPS (DEM)", "tab:green"));
   if (dry.seed1)
-    fig.series.push_back(centerOfMassSeries(*dry.seed1, d, "event-driven", "tab:orange"));
+    fig.series.push_back(centerOfMassSeries(dry.seed1->profiles, d, "event-driven", "tab:orange"));
   if (const auto& h = dry.hydro[0].fields) {
-    Series hs = centerOfMassSeries(*h, d, "hydro", "tab:orange");
+    Series hs = centerOfMassSeries(h->lab, d, "hydro", "tab:orange");
     hs.linestyle = "--";
     fig.series.push_back(hs);
   }

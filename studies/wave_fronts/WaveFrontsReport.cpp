@@ -14,10 +14,10 @@ namespace granwave {
 
 namespace {
 
-Series frontSeries(const Profiles& p, double d, std::string label, std::string color,
+Series frontSeries(const PhaseProfiles& p, double d, std::string label, std::string color,
                    std::string marker) {
   std::vector<double> y;
-  for (int k = 0; k < p.phases; ++k) y.push_back((p.front[k] - p.plate[k]) / d);
+  for (int k = 0; k < p.phases(); ++k) y.push_back((p.front_height[k] - p.plate_height[k]) / d);
   Series s = lineSeries(p.phase, y, std::move(label), std::move(color));
   s.style = "points";
   s.marker = std::move(marker);
@@ -93,8 +93,9 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
                     format(p.tracked.speed), periodList(p.periods),
                     formatNumber(p.collision_phase)});
   if (p.first) {
-    fronts.series.push_back(frontSeries(*p.first, d, "ED " + name, kLawColors[law], "^"));
-    com.series.push_back(centerOfMassSeries(*p.first, d, "ED " + name, kLawColors[law]));
+    const PhaseProfiles& first = p.first->profiles;
+    fronts.series.push_back(frontSeries(first, d, "ED " + name, kLawColors[law], "^"));
+    com.series.push_back(centerOfMassSeries(first, d, "ED " + name, kLawColors[law]));
   }
   for (int v = 0; v < 2; ++v) {
     const HydroOutcome& h = p.hydro[v];
@@ -111,15 +112,16 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
          h.fields->periodic ? std::to_string(h.fields->period) : "none in the cycles run",
          formatNumber(h.collision_phase)});
     if (v != 0) continue;
-    fronts.series.push_back(frontSeries(*h.fields, d, "hydro " + name, kLawColors[law], "o"));
-    Series cs = centerOfMassSeries(*h.fields, d, "hydro " + name, kLawColors[law]);
+    fronts.series.push_back(frontSeries(h.fields->lab, d, "hydro " + name, kLawColors[law], "o"));
+    Series cs = centerOfMassSeries(h.fields->lab, d, "hydro " + name, kLawColors[law]);
     cs.linestyle = "--";
     com.series.push_back(cs);
   }
   if (law == 0 && p.first) {
     std::vector<double> plate;
-    for (int k = 0; k < p.first->phases; ++k) plate.push_back(p.first->plate[k] / d);
-    com.series.push_back(lineSeries(p.first->phase, plate, "plate", "black"));
+    const PhaseProfiles& first = p.first->profiles;
+    for (int k = 0; k < first.phases(); ++k) plate.push_back(first.plate_height[k] / d);
+    com.series.push_back(lineSeries(first.phase, plate, "plate", "black"));
   }
 }
 
@@ -177,28 +179,29 @@ void profileSections(const WaveFrontsConfig& c, const WaveFrontsResults& r, Repo
     const std::string name = kLawNames[law];
     const double T0 = derive(c.scenes.base[law]).T0;
     const double Lz = c.scenes.base[law].container.height;
-    if (const auto& p = r.paper[law].seed1) {
-      const ImpactFronts imp = impactFronts(p->fronts);
+    if (const auto& seed1 = r.paper[law].seed1) {
+      const PhaseProfiles& p = seed1->profiles;
+      const ImpactFronts imp = impactFronts(p);
       const double onset = imp.strong_start >= 0 ? imp.strong_start : c.profile_phases.front();
       prof.add(profilesAtPhases(
-          *p, p->temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
+          p, p.pooled.profile_temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
           "Particles, " + name + ": T~g(z) / T0", "T~g / T0",
           fmt::format("From the onset of the strong impact's front (t/T = {:.2f} of the "
                       "{}-cycle window), at the paper's spacing.",
                       onset, c.window)));
-      st.add(spaceTimeFigure(*p, d, Lz, "Particles, " + name,
-                             fmt::format("Layer period {} T.", p->layer_period)));
+      st.add(spaceTimeFigure(p, d, Lz, "Particles, " + name,
+                             fmt::format("Layer period {} T.", seed1->context.layer_period)));
     }
     if (const auto& h = r.paper[law].hydro[0].fields) {
       const ImpactFronts& imp = r.paper[law].hydro[0].fronts;
       const double onset = imp.strong_start >= 0 ? imp.strong_start : c.profile_phases.front();
       prof.add(profilesAtPhases(
-          *h, h->temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
-          "Hydro, " + name + ": T(z) / T0", "T / T0",
+          h->lab, h->lab.pooled.profile_temperature, 1.0 / T0, d,
+          phasesFromImpact(c.profile_phases, onset), "Hydro, " + name + ": T(z) / T0", "T / T0",
           fmt::format("Velocity-dependent closure; from the onset of the impact front (t/T = "
                       "{:.2f}), at the paper's spacing.",
                       onset)));
-      st.add(spaceTimeFigure(*h, d, Lz, "Hydro, " + name,
+      st.add(spaceTimeFigure(h->lab, d, Lz, "Hydro, " + name,
                              h->periodic ? fmt::format("Periodic state of period {} T.", h->period)
                                          : std::string("No periodic state was reached.")));
     }

@@ -72,14 +72,15 @@ Measurement overSeedRuns(const std::vector<Measurement>& v) {
   return meanAndStandardError(values);
 }
 
-void addSeed(StateShares& s, const StateSeries& series, int period) {
+void addSeed(StateShares& s, const FieldsRecord& run) {
+  const PeriodDoublingSeries& series = run.context.period_doubling;
   ++s.seeds;
-  s.seeds_period2 += period == 2;
-  s.windows += series.windows();
-  s.windows_period2 += series.period2_windows;
+  s.seeds_period2 += run.context.layer_period == 2;
+  s.windows += static_cast<int>(series.f2_strength.size());
+  s.windows_period2 += period2Windows(series);
   s.effective_windows += series.effective_windows;
   for (double t : series.threshold) s.max_threshold = std::max(s.max_threshold, t);
-  for (int k = 0; k < 2; ++k) s.state_windows[k] += std::max(0, series.state_windows[k]);
+  for (int k = 0; k < 2; ++k) s.state_windows[k] += std::max(0, run.state_windows[k]);
 }
 
 }  // namespace
@@ -91,11 +92,11 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
   for (int sd : seedsOf(c, runs, law)) {
     const RunRecord& r = runs.get(WaveFrontsConfig::particleRun(law, fmt::format("seed {}", sd)));
     if (!r.ok) continue;
-    const StateSeries series = readStateSeries(r.fieldsPath());
-    if (!series.available) continue;
-    addSeed(s, series, series.layer_period);
+    const FieldsRecord run = readFieldsFile(r.fieldsPath());
+    if (run.context.period_doubling.f2_strength.empty()) continue;  // no whole window
+    addSeed(s, run);
     const std::string dry_label = WaveFrontsConfig::particleRun(0, fmt::format("seed {}", sd));
-    std::optional<ParticleFields> dry;
+    std::optional<FieldsRecord> dry;
     if (law == 1 && runs.has(dry_label)) dry = particleFields(runs, dry_label);
     for (int k = 0; k < 2; ++k) {
       const auto state = readStateFields(r.fieldsPath(), k + 1);

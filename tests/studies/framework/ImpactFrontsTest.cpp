@@ -12,14 +12,30 @@ using granwave::Measurement;
 
 namespace {
 
-granwave::Front front(double start, double speed, double error, double peak, bool impact = true) {
-  granwave::Front f;
-  f.start = start;
-  f.speed = speed;
-  f.error = error;
-  f.peak = peak;
-  f.from_impact = impact;
-  return f;
+// A front starting at t/T = `start` of a two-cycle window sampled at t/T = k/100.
+struct Front {
+  double start, speed, error, peak;
+  bool impact = true;
+};
+
+granwave::PhaseProfiles window(const std::vector<Front>& fronts) {
+  granwave::PhaseProfiles p;
+  p.pooled.phases = 200;
+  for (int k = 0; k < 200; ++k) p.phase.push_back(k / 100.0);
+  for (const Front& f : fronts) {
+    granwave::FrontEpisode e;
+    e.first_phase = static_cast<int>(std::lround(f.start * 100));
+    e.speed = f.speed;
+    e.speed_error = f.error;
+    e.peak_temperature = f.peak;
+    e.from_impact = f.impact;
+    p.fronts.push_back(e);
+  }
+  return p;
+}
+
+granwave::ImpactFronts impactFronts(const std::vector<Front>& fronts) {
+  return granwave::impactFronts(window(fronts));
 }
 
 }  // namespace
@@ -27,8 +43,7 @@ granwave::Front front(double start, double speed, double error, double peak, boo
 TEST(StudyImpactFronts, WeakImpactIsTheFrontWithTheLowerPeak) {
   // The strong front comes first in the window and is the slower one: order and speed must
   // not decide, only the peak.
-  const granwave::ImpactFronts r =
-      granwave::impactFronts({front(0.4, 1.2, 0.1, 6.0), front(1.4, 1.9, 0.2, 2.5)});
+  const granwave::ImpactFronts r = impactFronts({{0.4, 1.2, 0.1, 6.0}, {1.4, 1.9, 0.2, 2.5}});
   EXPECT_EQ(r.count, 2);
   EXPECT_DOUBLE_EQ(r.weak.value, 1.9);
   EXPECT_DOUBLE_EQ(r.weak.error, 0.2);
@@ -42,9 +57,10 @@ TEST(StudyImpactFronts, WeakImpactIsTheFrontWithTheLowerPeak) {
 }
 
 TEST(StudyImpactFronts, FrontsNotFromAnImpactAreIgnored) {
-  const granwave::ImpactFronts r =
-      granwave::impactFronts({front(0.1, 5.0, 0.1, 0.5, false), front(0.4, 1.2, 0.1, 6.0),
-                              front(0.7, 9.0, 0.1, 50, false), front(1.4, 1.9, 0.2, 2.5)});
+  const granwave::ImpactFronts r = impactFronts({{0.1, 5.0, 0.1, 0.5, false},
+                                                 {0.4, 1.2, 0.1, 6.0},
+                                                 {0.7, 9.0, 0.1, 50, false},
+                                                 {1.4, 1.9, 0.2, 2.5}});
   EXPECT_EQ(r.count, 2);
   EXPECT_DOUBLE_EQ(r.weak.value, 1.9);
   EXPECT_DOUBLE_EQ(r.strong.value, 1.2);
@@ -52,7 +68,7 @@ TEST(StudyImpactFronts, FrontsNotFromAnImpactAreIgnored) {
 
 TEST(StudyImpactFronts, SingleImpactFrontStandsForBothImpacts) {
   const granwave::ImpactFronts r =
-      granwave::impactFronts({front(0.9, 1.5, 0.1, 3.0), front(0.2, 4.0, 0.1, 9.0, false)});
+      impactFronts({{0.9, 1.5, 0.1, 3.0}, {0.2, 4.0, 0.1, 9.0, false}});
   EXPECT_EQ(r.count, 1);
   EXPECT_DOUBLE_EQ(r.weak.value, 1.5);
   EXPECT_DOUBLE_EQ(r.strong.value, 1.5);
@@ -62,7 +78,7 @@ TEST(StudyImpactFronts, SingleImpactFrontStandsForBothImpacts) {
 }
 
 TEST(StudyImpactFronts, NoImpactFrontGivesInvalidSpeeds) {
-  const granwave::ImpactFronts r = granwave::impactFronts({front(0.2, 4.0, 0.1, 9.0, false)});
+  const granwave::ImpactFronts r = impactFronts({{0.2, 4.0, 0.1, 9.0, false}});
   EXPECT_EQ(r.count, 0);
   EXPECT_FALSE(r.weak.valid());
   EXPECT_FALSE(r.strong.valid());
@@ -71,10 +87,8 @@ TEST(StudyImpactFronts, NoImpactFrontGivesInvalidSpeeds) {
 }
 
 TEST(StudyImpactFronts, CombiningRunsCombinesEachImpactSeparately) {
-  const granwave::ImpactFronts a =
-      granwave::impactFronts({front(0.4, 1.0, 0.1, 6.0), front(1.4, 2.0, 0.1, 2.5)});
-  const granwave::ImpactFronts b =
-      granwave::impactFronts({front(0.5, 1.1, 0.1, 6.0), front(1.5, 2.1, 0.1, 2.5)});
+  const granwave::ImpactFronts a = impactFronts({{0.4, 1.0, 0.1, 6.0}, {1.4, 2.0, 0.1, 2.5}});
+  const granwave::ImpactFronts b = impactFronts({{0.5, 1.1, 0.1, 6.0}, {1.5, 2.1, 0.1, 2.5}});
   const granwave::ImpactFronts r = granwave::combineImpactFronts({a, b});
   EXPECT_EQ(r.count, 4);
   EXPECT_NEAR(r.weak.value, 2.05, 1e-12);
@@ -85,12 +99,12 @@ TEST(StudyImpactFronts, CombiningRunsCombinesEachImpactSeparately) {
 TEST(StudyImpactFronts, CenterOfMassMinimumPhasesFindTheLowestPointOfEachCycle) {
   // A two-cycle window, 50 phases per cycle, centre of mass z = 5 + cos(2 pi (t/T - 0.3)):
   // lowest at t/T = 0.8 and 1.8, i.e. 0.8 in both cycles.
-  granwave::Profiles p;
-  p.phases = 100;
-  for (int k = 0; k < p.phases; ++k) {
-    const double t = 2.0 * k / p.phases;
+  granwave::PhaseProfiles p;
+  p.pooled.phases = 100;
+  for (int k = 0; k < p.phases(); ++k) {
+    const double t = 2.0 * k / p.phases();
     p.phase.push_back(t);
-    p.com.push_back(5 + std::cos(2 * std::numbers::pi * (t - 0.3)));
+    p.pooled.center_of_mass_height.push_back(5 + std::cos(2 * std::numbers::pi * (t - 0.3)));
   }
   const std::vector<double> phases = granwave::centerOfMassMinimumPhases(p, 2);
   ASSERT_EQ(phases.size(), 2u);
@@ -103,11 +117,11 @@ TEST(StudyImpactFronts, CenterOfMassMinimumPhasesFindTheLowestPointOfEachCycle) 
 }
 
 TEST(StudyImpactFronts, CenterOfMassMinimumPhasesOfAnEmptyWindowAreNone) {
-  granwave::Profiles p;
+  granwave::PhaseProfiles p;
   EXPECT_TRUE(granwave::centerOfMassMinimumPhases(p, 2).empty());
-  p.phases = 1;
+  p.pooled.phases = 1;
   p.phase = {0.0};
-  p.com = {1.0};
+  p.pooled.center_of_mass_height = {1.0};
   EXPECT_TRUE(granwave::centerOfMassMinimumPhases(p, 0).empty());
   EXPECT_TRUE(granwave::centerOfMassMinimumPhases(p, 2).empty());
 }

@@ -10,32 +10,34 @@
 using namespace granwave;
 
 namespace {
-ParticleFields layer(double rms, int phases, int nz) {
-  ParticleFields p;
-  p.phases = phases;
-  p.nz = nz;
-  p.cycles_per_window = 1;
+FieldsRecord layer(double rms, int phases, int nz) {
+  FieldsRecord r;
+  r.cycles_per_window = 1;
+  PhaseProfiles& p = r.profiles;
+  p.pooled.phases = phases;
+  p.pooled.nz = nz;
   const std::size_t n = static_cast<std::size_t>(phases) * nz;
-  p.rms_velocity_x.assign(n, rms);
-  p.area_fraction.assign(n, 0.5);
+  p.pooled.profile_rms_velocity_x.assign(n, rms);
+  p.pooled.profile_area_fraction.assign(n, 0.5);
   for (int k = 0; k < phases; ++k) p.phase.push_back((k + 0.5) / phases);
-  return p;
+  return r;
 }
 }  // namespace
 
 TEST(WaveMomentumRatio, DryTwiceAsAgitatedGivesTwoWithoutSpread) {
-  const ParticleFields dry = layer(0.2, 50, 10), wet = layer(0.1, 50, 10);
+  const FieldsRecord dry = layer(0.2, 50, 10), wet = layer(0.1, 50, 10);
   const Measurement r = waveMomentumRatio(dry, wet, {});
   EXPECT_NEAR(r.value, 2.0, 1e-12);
   EXPECT_NEAR(r.error, 0.0, 1e-12);
 }
 
 TEST(WaveMomentumRatio, DiluteRowsAndQuietWetRowsAreLeftOut) {
-  ParticleFields dry = layer(0.2, 50, 10), wet = layer(0.1, 50, 10);
+  FieldsRecord dry = layer(0.2, 50, 10), wet = layer(0.1, 50, 10);
+  PhaseFields &d = dry.profiles.pooled, &w = wet.profiles.pooled;
   for (int k = 0; k < 50; ++k) {
-    dry.rms_velocity_x[static_cast<std::size_t>(k) * 10] = 5.0;  // row 0: dilute in dry
-    dry.area_fraction[static_cast<std::size_t>(k) * 10] = 0.01;
-    wet.rms_velocity_x[static_cast<std::size_t>(k) * 10 + 1] = 1e-4;  // row 1: wet too quiet
+    d.profile_rms_velocity_x[d.row(k, 0)] = 5.0;  // row 0: dilute in dry
+    d.profile_area_fraction[d.row(k, 0)] = 0.01;
+    w.profile_rms_velocity_x[w.row(k, 1)] = 1e-4;  // row 1: wet too quiet
   }
   EXPECT_NEAR(waveMomentumRatio(dry, wet, {}).value, 2.0, 1e-12);
 }
