@@ -10,6 +10,7 @@
 #include "coarse_grain/FieldsReader.hpp"
 #include "scene/SceneDerived.hpp"
 #include "studies/framework/StudyResults.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 

@@ -2,7 +2,6 @@
 
 #include <fmt/format.h>
 
-#include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
 
 namespace granwave {
@@ -46,22 +45,6 @@ std::string particleLabel(int law, const std::string& tag) {
 
 std::string hydroLabel(int law, const std::string& tag) {
   return fmt::format("hydro {} {}", kLawNames[law], tag);
-}
-
-hydro::RestitutionClosure restitutionClosure(const Scene& s) {
-  if (s.hydro.restitution_model == HydroRestitutionModel::Constant ||
-      s.contact.restitution == RestitutionKind::Constant)
-    return hydro::RestitutionClosure::constant(s.contact.e);
-  if (s.contact.restitution == RestitutionKind::Dry)
-    return hydro::RestitutionClosure::dry(derive(s).kappa_si);
-  return hydro::RestitutionClosure::wet(s.contact.e_inf, derive(s).v_c);
-}
-
-double effectiveRestitutionAtT0(const Scene& s) {
-  Scene velocity = s;
-  velocity.hydro.restitution_model = HydroRestitutionModel::Velocity;
-  const SceneDerived dv = derive(s);
-  return std::sqrt(1.0 - restitutionClosure(velocity).phiW(0.5 * dv.v0 * dv.v0));
 }
 
 }  // namespace granwave

@@ -1,12 +1,11 @@
 #pragma once
 // The scenes of a study: the dry and the wet layer every study compares ([scenes] dry, wet and
 // set of the study file, docs/studies.md), each run's scene as a base scene plus
-// `section.key=value` overrides (the same syntax and checks as --set), and the hydro closure
-// that matches a scene's restitution law.
+// `section.key=value` overrides (the same syntax and checks as --set). The hydro closure that
+// matches a scene's law is in studies/hydro_run/HydroModel.hpp.
 #include <string>
 #include <vector>
 
-#include "hydro/RestitutionClosure.hpp"
 #include "scene/Scene.hpp"
 #include "studies/framework/StudyFile.hpp"
 
@@ -41,14 +40,5 @@ struct LawScenes {
 // Run labels of the two methods: "ED dry <tag>", "hydro wet <tag>".
 std::string particleLabel(int law, const std::string& tag);
 std::string hydroLabel(int law, const std::string& tag);
-
-// The Maxwell-averaged closure of the scene's law (hydro.restitution_model = "velocity"),
-// or its constant e.
-hydro::RestitutionClosure restitutionClosure(const Scene& scene);
-
-// e_eff = sqrt(1 - <1 - e^2>) of the scene's law for a Maxwellian at the drive's temperature
-// scale theta0 = v0^2 / 2 (T0 = m v0^2 / 2): the constant restitution that stands in for the
-// velocity-dependent law in the constant-e models.
-double effectiveRestitutionAtT0(const Scene& scene);
 
 }  // namespace granwave

@@ -9,6 +9,7 @@
 #include "hydro/SoundSpeed.hpp"
 #include "scene/SceneDerived.hpp"
 #include "studies/framework/StudyResults.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 
 namespace granwave {
 

@@ -14,6 +14,7 @@
 #include "studies/framework/InstalledFiles.hpp"
 #include "studies/framework/Measurement.hpp"
 #include "studies/framework/SeedResampling.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
 #include "studies/wave_fronts/WaveFrontsReport.hpp"
 

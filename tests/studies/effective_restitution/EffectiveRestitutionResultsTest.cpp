@@ -24,6 +24,7 @@
 #include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/framework/StudyScenes.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 #include "tests/studies/framework/TinyStudy.hpp"
 
 namespace {

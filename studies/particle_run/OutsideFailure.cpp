@@ -1,4 +1,4 @@
-#include "studies/cli/OutsideFailure.hpp"
+#include "studies/particle_run/OutsideFailure.hpp"
 
 #include <new>
 #include <system_error>

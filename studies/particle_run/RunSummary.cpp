@@ -1,4 +1,4 @@
-#include "studies/cli/RunSummary.hpp"
+#include "studies/particle_run/RunSummary.hpp"
 
 #include <fmt/format.h>
 

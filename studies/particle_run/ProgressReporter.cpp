@@ -1,4 +1,4 @@
-#include "studies/cli/ProgressReporter.hpp"
+#include "studies/particle_run/ProgressReporter.hpp"
 
 #include <fmt/format.h>
 

@@ -1,4 +1,4 @@
-#include "studies/cli/FieldsSetup.hpp"
+#include "studies/particle_run/FieldsSetup.hpp"
 
 #include <fmt/format.h>
 

@@ -1,31 +1,23 @@
-// Which failures a study caches as the run's result (studies/ExitCode.hpp): the engine's and
-// the solver's failures are; file and checkpoint problems, which come from outside the run,
-// are not, and they keep a run's checkpoint.
+// Which failures come from a run's surroundings (studies/particle_run/OutsideFailure.hpp): file
+// and checkpoint problems and this machine's memory are, and a run keeps its checkpoint for
+// them (a study does not cache them); the engine's breakdowns and the analysis's errors are the
+// run's own result.
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <new>
 #include <stdexcept>
 #include <system_error>
 
 #include "h5/H5Error.hpp"
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
-#include "studies/cli/OutsideFailure.hpp"
+#include "studies/particle_run/OutsideFailure.hpp"
 #include "studies/run_files/RunCheckpoint.hpp"
-#include "studies/runner/ExitCode.hpp"
 
 using namespace granwave;
 
-TEST(ExitCode, RunOutcomesAreSuccessAndTheDeterministicFailuresOnly) {
-  for (int code :
-       {kExitSuccess, kExitError, kExitInvalidInput, kExitEngineBreakdown, kExitSolverFailure})
-    EXPECT_TRUE(isRunOutcome(code)) << code;
-  for (int code : {int{kExitOutOfMemory}, int{kExitFileError}, int{kExitCheckpointError},
-                   int{kExitInterrupted}, 128 + 9, -1})
-    EXPECT_FALSE(isRunOutcome(code)) << code;
-}
-
-TEST(ExitCode, FileAndCheckpointErrorsComeFromOutsideTheRun) {
+TEST(OutsideFailure, FileAndCheckpointErrorsComeFromOutsideTheRun) {
   EXPECT_TRUE(isOutsideFailure(CheckpointError("run.h5: another granwave process ...")));
   EXPECT_TRUE(isOutsideFailure(h5::H5Error("run.h5: write failed")));
   EXPECT_TRUE(isOutsideFailure(std::filesystem::filesystem_error(
@@ -35,7 +27,7 @@ TEST(ExitCode, FileAndCheckpointErrorsComeFromOutsideTheRun) {
   EXPECT_TRUE(isOutsideFailure(std::bad_alloc()));
 }
 
-TEST(ExitCode, EngineBreakdownsAndAnalysisErrorsAreTheRunsOwn) {
+TEST(OutsideFailure, EngineBreakdownsAndAnalysisErrorsAreTheRunsOwn) {
   EXPECT_FALSE(isOutsideFailure(InelasticCollapse("collapse at t = 1 s", 1.0, 2, 3)));
   EXPECT_FALSE(isOutsideFailure(EventLoopStall("event loop stalled")));
   EXPECT_FALSE(isOutsideFailure(std::runtime_error("no steady cycles")));
