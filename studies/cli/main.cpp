@@ -19,7 +19,7 @@
 #include "studies/cli/SimulateCommand.hpp"
 #include "studies/cli/StudyCommand.hpp"
 #include "studies/cli/Version.hpp"
-#include "studies/framework/StudyFile.hpp"
+#include "studies/contract/StudyFile.hpp"
 #include "studies/particle_run/OutsideFailure.hpp"
 #include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/runner/ExitCode.hpp"

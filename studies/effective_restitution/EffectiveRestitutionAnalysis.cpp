@@ -9,7 +9,7 @@
 
 #include "coarse_grain/FieldsReader.hpp"
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/hydro_run/HydroModel.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/run_files/RunOutputs.hpp"

@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/ImpactFronts.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/FailureReason.hpp"
+#include "studies/contract/StudyResults.hpp"
+#include "studies/wave_analysis/ImpactFronts.hpp"
 
 namespace granwave {
 

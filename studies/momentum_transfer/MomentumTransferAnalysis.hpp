@@ -9,10 +9,10 @@
 #include "coarse_grain/FieldsReader.hpp"
 #include "coarse_grain/MomentumDeficiency.hpp"
 #include "h5/File.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/momentum_transfer/BinaryImpactEstimate.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

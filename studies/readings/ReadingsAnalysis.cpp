@@ -8,12 +8,12 @@
 #include <optional>
 
 #include "coarse_grain/FieldsReader.hpp"
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/ImpactFronts.hpp"  // centerOfMassMinimumPhases
-#include "studies/framework/StudyResults.hpp"
-#include "studies/framework/VelocityFronts.hpp"
-#include "studies/framework/WaveMomentumRatio.hpp"
+#include "studies/contract/FailureReason.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/run_files/RunOutputs.hpp"
+#include "studies/wave_analysis/ImpactFronts.hpp"  // centerOfMassMinimumPhases
+#include "studies/wave_analysis/VelocityFronts.hpp"
+#include "studies/wave_analysis/WaveMomentumRatio.hpp"
 
 namespace granwave {
 

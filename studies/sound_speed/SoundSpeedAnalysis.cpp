@@ -8,7 +8,7 @@
 #include "hydro/ShockRelations.hpp"
 #include "hydro/SoundSpeed.hpp"
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/hydro_run/HydroModel.hpp"
 
 namespace granwave {

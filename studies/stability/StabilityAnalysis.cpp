@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 
 namespace granwave {

@@ -10,14 +10,14 @@
 
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
-#include "studies/framework/InstalledFiles.hpp"
-#include "studies/framework/RunCosts.hpp"
+#include "studies/installation/InstalledFiles.hpp"
 #include "studies/report/ReportWriter.hpp"
 #include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/runner/ChildProcess.hpp"
 #include "studies/runner/InterruptFlag.hpp"
 #include "studies/runner/RunCache.hpp"
 #include "studies/runner/RunScheduler.hpp"
+#include "studies/study_run/RunCosts.hpp"
 
 namespace granwave {
 

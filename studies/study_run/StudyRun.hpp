@@ -5,7 +5,7 @@
 // the provenance; atomically) and the report page drawn by studies/report/render_report.py.
 #include <string>
 
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/runner/RemoteWorkers.hpp"
 
 namespace granwave {

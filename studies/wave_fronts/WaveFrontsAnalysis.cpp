@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 
 namespace granwave {
 
@@ -93,54 +93,6 @@ ParameterSweep wetSweep(const WaveFrontsConfig& c, const RunSet& runs, const std
                                    WaveFrontsConfig::hydroRun(1, tag), c.sweepCycles(1)));
   }
   return sw;
-}
-
-// Particles: the statistical error against the cycles averaged. Hydro: the discretisation
-// error against the finest grid with the tightest tolerance (the reference).
-CostAccuracy costAccuracy(const WaveFrontsConfig& c, const RunSet& runs, const PaperLaw& wet) {
-  CostAccuracy out;
-  for (double dur : c.cost_durations) {
-    const std::string label =
-        WaveFrontsConfig::particleRun(1, fmt::format("{} s", formatCompact(dur)));
-    auto p = particleFields(runs, label);
-    if (!p) continue;
-    CostRow row;
-    row.duration = dur;
-    row.pooled_cycles = p->pooled_cycles;
-    row.cpu = runs.get(label).cpu;
-    row.speed = impactFronts(p->profiles).all;
-    row.error = row.speed.error;
-    out.ed_cpu.push_back(row.cpu);
-    out.ed_error.push_back(row.error);
-    out.rows.push_back(row);
-  }
-  const int ref_cells = *std::max_element(c.cost_cells.begin(), c.cost_cells.end());
-  const double ref_rtol = *std::min_element(c.cost_rtol.begin(), c.cost_rtol.end());
-  const HydroOutcome ref = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(ref_cells, ref_rtol));
-  const Measurement v_ref = ref.fields ? ref.fronts.all : Measurement{};
-  for (int cells : c.cost_cells)
-    for (double rtol : c.cost_rtol) {
-      const HydroOutcome h = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(cells, rtol));
-      CostRow row;
-      row.particles = false;
-      row.ok = h.fields.has_value();
-      row.reference = cells == ref_cells && rtol == ref_rtol;
-      row.cells = cells;
-      row.rtol = rtol;
-      row.cpu = h.cpu;
-      row.failure = h.failure;
-      if (row.ok) {
-        row.speed = h.fronts.all;
-        row.error = row.reference ? NAN : std::abs(row.speed.value - v_ref.value);
-        if (!row.reference && std::isfinite(row.error)) {
-          out.hydro_by_rtol[rtol].first.push_back(row.cpu);
-          out.hydro_by_rtol[rtol].second.push_back(row.error);
-        }
-      }
-      out.rows.push_back(row);
-    }
-  out.model_gap = std::abs(v_ref.value - wet.ed.all.value);
-  return out;
 }
 
 void writePaper(h5::File& f, int law, const PaperLaw& p) {
@@ -236,7 +188,6 @@ void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults
 
 // Measured CPU times (they differ between any two executions) all live under /cost.
 void writeCost(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {
-  const CostAccuracy& cost = r.cost;
   const std::string grp = kRoot + "/cost";
   f.createGroup(grp);
   for (int law = 0; law < kLaws; ++law) {  // CPU seconds per answer over the N sweep
@@ -249,48 +200,10 @@ void writeCost(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& 
     putSeries(f, fmt::format("{}/per_answer_{}_hydro_cpu_seconds", grp, kLawNames[law]), hydro,
               "s");
   }
-  putSeries(f, grp + "/ed_cpu_seconds", cost.ed_cpu, "s");
-  putSeries(f, grp + "/ed_error", cost.ed_error, "m s-1");
-  for (const auto& [rtol, xy] : cost.hydro_by_rtol) {
-    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_cpu_seconds", grp, rtol), xy.first, "s");
-    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_error", grp, rtol), xy.second, "m s-1");
-  }
-  putValue(f, grp, "model_gap", cost.model_gap);
+  writeCostAccuracy(f, grp, r.cost);
 }
 
 }  // namespace
-
-double meanPhase(const std::vector<double>& v) {
-  double c = 0, s = 0;
-  for (double x : v) {
-    c += std::cos(2 * M_PI * x);
-    s += std::sin(2 * M_PI * x);
-  }
-  if (v.empty()) return NAN;
-  // In (0.5, 1.5]: collision times near the end of a cycle read as 0.98, 1.01, not 0.01.
-  double m = std::atan2(s, c) / (2 * M_PI);
-  return m <= 0.5 ? m + 1 : m;
-}
-
-std::optional<FieldsRecord> particleFields(const RunSet& runs, const std::string& label) {
-  const RunRecord& r = runs.get(label);
-  if (!r.ok) return std::nullopt;
-  return readFieldsFile(r.fieldsPath());
-}
-
-HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
-  HydroOutcome h;
-  const RunRecord& r = runs.get(label);
-  h.cpu = r.cpu;
-  if (!r.ok) {
-    h.failure = r.message;
-    return h;
-  }
-  h.fields = readHydroRunFile(r.hydroPath());
-  h.fronts = impactFronts(h.fields->lab);
-  h.collision_phase = meanPhase(centerOfMassMinimumPhases(h.fields->lab, h.fields->windowCycles()));
-  return h;
-}
 
 bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit) {
   const int n = p.phases();
@@ -302,12 +215,6 @@ bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit) {
     if (b - a > limit) return true;  // NaN (no peak) compares false
   }
   return false;
-}
-
-VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency) {
-  if (!h.fields || h.fields->lab.phases() <= 1) return {};
-  const PhaseProfiles& lab = h.fields->lab;
-  return velocityFronts(lab, (lab.phase[1] - lab.phase[0]) / frequency);
 }
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {
@@ -322,11 +229,11 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
     }
   r.wet_sweeps[0] = wetSweep(c, runs, "St_c", c.stokes);
   r.wet_sweeps[1] = wetSweep(c, runs, "e_inf", c.e_inf);
-  r.cost = costAccuracy(c, runs, r.paper[1]);
+  r.cost = costAccuracy(c, runs, r.paper[1].ed.all);
   r.failures = analyseFailures(c, runs);
   for (int law = 0; law < kLaws; ++law) r.models[law] = analyseModels(c, runs, law);
   for (int law = 0; law < kLaws; ++law) r.states[law] = analyseStates(c, runs, law);
-  if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0]);
+  if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0].seed1, r.paper[0].hydro[0]);
   return r;
 }
 
