@@ -19,7 +19,8 @@ struct PhaseProfiles {
   std::vector<double> front_height;            // [phase] m, NaN where there is no front
   std::vector<double> front_peak_temperature;  // [phase] peak T~_g / T0
   // The profiles (profile_*, [phase][z]) and center_of_mass_height; the cell arrays stay empty.
-  // A profile a model has no data for (the continuum's RMS(v_x)) is NaN.
+  // A profile a model has no data for (the continuum's RMS(v_x)) is empty where the window is
+  // made and NaN where it is read from a file (FieldsReader.hpp).
   PhaseFields pooled;
   std::vector<PhaseFields> blocks;   // the same per block of cycles (empty for the continuum)
   std::vector<FrontEpisode> fronts;  // without their per-phase time and height

@@ -1,4 +1,4 @@
-// The stability study's check of the paper's features (studies/StabilityFeatures.hpp) on
+// The stability study's check of the paper's features (studies/stability/StabilityFeatures.hpp) on
 // synthetic grids: a grid drawn as the paper describes its Fig. 3 (Huang, Sec. III) passes
 // every check; the pattern this model measures (waves in the wet layer, fluid at Gamma >= 6)
 // fails the ones it contradicts; a grid without the points a check needs says "not tested".
