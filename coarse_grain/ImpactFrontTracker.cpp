@@ -47,6 +47,16 @@ int bestCrossing(const FrontProfiles& p, int ph, int jb, int ja, double mid) {
 
 }  // namespace
 
+FrontProfiles frontProfiles(const PhaseFields& fields, const std::vector<double>& z) {
+  FrontProfiles f;
+  f.phases = fields.phases;
+  f.nz = fields.nz;
+  f.z = z;
+  f.density = fields.profile_area_fraction;
+  f.velocity = fields.profile_velocity_z;
+  return f;
+}
+
 FrontCrossing locateFront(const FrontProfiles& p, int ph, const FrontTrackOptions& o) {
   FrontCrossing c;
   int lo = -1, hi = -1, jb = -1;

@@ -25,6 +25,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "coarse_grain/PhaseFields.hpp"
+
 namespace granwave {
 
 struct FrontTrackOptions {
@@ -49,6 +51,10 @@ struct FrontProfiles {
     return z.size() == static_cast<std::size_t>(nz) ? z[j] : at(z, phase, j);
   }
 };
+
+// The lab-frame profiles of phase fields on rows at heights `z`, as the tracker reads them:
+// the area fraction as the density, v~_z as the velocity.
+FrontProfiles frontProfiles(const PhaseFields& fields, const std::vector<double>& z);
 
 // The front at one phase.
 struct FrontCrossing {
