@@ -24,8 +24,8 @@ struct WallContact {
   S elastic, stiffness, indicator;  // stress, d(stress)/d(penetration) per metre, in contact
 };
 template <class S>
-WallContact<S> wallContact(const S& gap, double sigma, double scale) {
-  const double r = GranularHydro1D::kContactRange, p0 = GranularHydro1D::kContactStiffness;
+WallContact<S> wallContact(const S& gap, double sigma, double scale, const HydroRegularisation& n) {
+  const double r = n.wall_contact_range, p0 = n.wall_contact_stiffness;
   const S pen = smoothPositivePart(S(r - gap / sigma), 1e-3 * r);
   const S k = pen / p0;
   return {scale * k * k * k, 3.0 * scale * k * k / (p0 * sigma),
@@ -62,15 +62,17 @@ struct GranularHydro1D::JetWorkspace {
 };
 
 GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model,
-                                 double column_mass)
+                                 double column_mass, const HydroRegularisation& numerics)
     : g_(g),
       model_(model),
+      numerics_(numerics),
       m_c_(column_mass / g.cells),
       vars_(model.rough.enabled ? 4 : 3),
+      theta_unit_(std::max(g.gravity, 1.0) * model.sigma),
       reg_{model.packingLimit() * model.mass / model.diskArea(),
-           1e-4 * model.mass / model.diskArea(),
+           numerics.packing_width * model.mass / model.diskArea(),
            1e-6 * model.sigma,
-           1e-8 * std::max(g.gravity, 1.0) * model.sigma,
+           numerics.temperature_floor * std::max(g.gravity, 1.0) * model.sigma,
            1e-4 * std::sqrt(std::max(g.gravity, 1.0) * model.sigma),
            closePackedDensity(model) * std::max(g.gravity, 1.0) * model.sigma},
       values_(std::make_unique<Workspace<double>>(g.cells)) {
@@ -97,7 +99,7 @@ std::string GranularHydro1D::componentName(int k) const {
 }
 
 double GranularHydro1D::contactStress(double gap, double speed, double rho, double c) const {
-  const WallContact<double> w = wallContact(gap, model_.sigma, reg_.contact_scale);
+  const WallContact<double> w = wallContact(gap, model_.sigma, reg_.contact_scale, numerics_);
   const double damping = rho * c + 2 * std::sqrt(w.stiffness * 0.5 * m_c_);
   return w.elastic + damping * std::max(speed, 0.0) * w.indicator;
 }
@@ -110,12 +112,18 @@ struct EffectiveCell {
   S rho, length, theta;
 };
 template <class S, class R>
-EffectiveCell<S> effectiveCell(const R& reg, double m_c, const S& z0, const S& z1, const S& theta) {
+EffectiveCell<S> effectiveCell(const R& reg, double m_c, double theta_unit, const S& z0,
+                               const S& z1, const S& s) {
+  using std::exp;
   using std::sqrt;
   const S length = smoothPositivePart(S(z1 - z0), reg.length_floor);
   const S gap = (reg.rho_max - m_c / length) / reg.packing_width;
-  const S rho = reg.rho_max - reg.packing_width * 0.5 * (gap + sqrt(gap * gap + 4.0));
-  return {rho, length, reg.theta_min + smoothPositivePart(S(theta - reg.theta_min), reg.theta_min)};
+  // s(x) = (x + sqrt(x^2 + 4))/2 = 2/(sqrt(x^2 + 4) - x): the second form keeps its digits
+  // when the cell is packed past close packing (x << 0), where the first cancels to 0.
+  const S map = value(gap) >= 0 ? S(0.5 * (gap + sqrt(gap * gap + 4.0)))
+                                : S(2.0 / (sqrt(gap * gap + 4.0) - gap));
+  const S rho = reg.rho_max - reg.packing_width * map;
+  return {rho, length, S(theta_unit * exp(s) + reg.theta_min)};
 }
 
 // Heat fluxes through interior nodes, central in the temperature.
@@ -141,9 +149,9 @@ struct WallExchange {
 template <class S>
 WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S>& cell,
                              const S& rho, double sigma, double scale, double u_width,
-                             double node_mass) {
+                             double node_mass, const HydroRegularisation& numerics) {
   using std::sqrt;
-  const WallContact<S> c = wallContact(gap, sigma, scale);
+  const WallContact<S> c = wallContact(gap, sigma, scale, numerics);
   const S step = 0.5 * (1.0 + approach / smoothAbs(approach, u_width));
   const S damping = rho * cell.sound_speed + 2.0 * sqrt(c.stiffness * node_mass + 1e-30);
   const S dashpot = damping * approach * step * c.indicator;
@@ -155,24 +163,24 @@ WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S
 // Cells: density, temperature, closures, stress, and the rough particles' exchange.
 template <class S>
 void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
-  const double c2 = kQuadraticViscosity, c1 = kLinearViscosity;
+  using std::exp;
+  const double c2 = numerics_.quadratic_viscosity;
   for (int i = 0; i < g_.cells; ++i) {
-    const EffectiveCell<S> c =
-        effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+    const EffectiveCell<S> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
+                                             U[heightIndex(i + 1)], U[temperatureIndex(i)]);
     w.rho[i] = c.rho;
     w.length[i] = c.length;
     w.theta[i] = c.theta;
     w.local[i] = model_.evaluate(c.rho, c.theta);
     const S du = U[velocityIndex(i + 1)] - U[velocityIndex(i)];
-    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
-    // exactly 0 at du = 0, so a resting layer feels none.
+    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho c2 du^2 there and exactly 0 at
+    // du = 0, so a resting layer feels none.
     const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg_.u_width));
-    const S q = c.rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
+    const S q = c.rho * compression * c2 * du * du;
     w.du[i] = du;
     w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
     if (!rough()) continue;
-    const S& theta_r = U[rotationIndex(i)];
-    const S spin = reg_.theta_min + smoothPositivePart(S(theta_r - reg_.theta_min), reg_.theta_min);
+    const S spin = theta_unit_ * exp(U[rotationIndex(i)]) + reg_.theta_min;
     const S nu = c.rho * (model_.diskArea() / model_.mass);
     model_.rough.rates(nu, model_.pair_correlation.g2(nu), model_.restitution.phiP(c.theta),
                        c.theta, spin, model_.sigma, w.exchange[i], w.spin[i]);
@@ -188,10 +196,10 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   cellStates(U, w);
   heatFluxes<S>(N, w);
   const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
-                                             w.rho[0], sigma, scale, u_width, 0.5 * m_c_);
+                                             w.rho[0], sigma, scale, u_width, 0.5 * m_c_, numerics_);
   const WallExchange<S> lid =
       wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
-                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_);
+                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_, numerics_);
   w.heat[0] = -plate.loss;  // the energy the collisions take leaves through the walls
   w.heat[N] = lid.loss;
   const double geff = effectiveGravity(t);
@@ -213,10 +221,13 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
       power -= 2.0 / model_.side_wall_width * l.wall_loss * l.p_kinetic * w.length[i];
     if (i == 0) power += plate.heating;
     if (i == N - 1) power += lid.heating;
-    dU[temperatureIndex(i)] = power / m_c_;
+    // d(ln theta)/dt = (d theta/dt) / theta, with the theta the unknown holds (without the
+    // closures' floor), so that m_c theta ds/dt is exactly the cell's power.
+    const S theta = theta_unit_ * exp(U[temperatureIndex(i)]);
+    dU[temperatureIndex(i)] = power / (m_c_ * theta);
     if (!rough()) continue;
-    dU[temperatureIndex(i)] += w.exchange[i];
-    dU[rotationIndex(i)] = w.spin[i];
+    dU[temperatureIndex(i)] += w.exchange[i] / theta;
+    dU[rotationIndex(i)] = w.spin[i] / (theta_unit_ * exp(U[rotationIndex(i)]));
   }
   for (int k = 0; k < size(); ++k)
     if (!std::isfinite(value(dU[k]))) return 1;
@@ -224,8 +235,8 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
 }
 
 GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {
-  const EffectiveCell<double> c =
-      effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+  const EffectiveCell<double> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
+                                                U[heightIndex(i + 1)], U[temperatureIndex(i)]);
   return {c.rho, c.theta};
 }
 
@@ -236,10 +247,7 @@ double GranularHydro1D::spacingFor(double rho_eff) const {
   return length - w * w / (4 * length);  // smoothPositivePart(l, w) = length
 }
 
-double GranularHydro1D::effectiveTemperature(double theta) const {
-  const double x = theta - reg_.theta_min;
-  return reg_.theta_min + 0.5 * (x + std::sqrt(x * x + reg_.theta_min * reg_.theta_min));
-}
+double GranularHydro1D::effectiveTemperature(double theta) const { return theta + reg_.theta_min; }
 
 int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {
   return residual(t, U, dUdt, *values_);

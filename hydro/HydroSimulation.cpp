@@ -38,7 +38,8 @@ HydroSimulation::HydroSimulation(const GranularHydro1D& pde, const HydroRunOptio
 std::vector<double> HydroSimulation::initialState() const {
   const double theta = opt_.initial_theta > 0 ? opt_.initial_theta
                                               : 1e-3 * pde_.geometry().gravity * pde_.model().sigma;
-  return settledLayer(pde_, theta);
+  return opt_.start == HydroRunOptions::Start::Spread ? spreadLayer(pde_, theta)
+                                                      : settledLayer(pde_, theta);
 }
 
 HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) const {
@@ -53,12 +54,12 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
   for (int i = 0; i < N; ++i) {
     const double z0 = U[pde_.heightIndex(i)], z1 = U[pde_.heightIndex(i + 1)];
     const double rho = m_c / (z1 - z0);
-    const double theta = std::max(U[pde_.temperatureIndex(i)], 0.0);
+    const double theta = pde_.temperature(U.data(), i);
     p.z.push_back(0.5 * (z0 + z1));
     p.n.push_back(rho / m.mass);
     p.u.push_back(0.5 * (U[pde_.velocityIndex(i)] + U[pde_.velocityIndex(i + 1)]));
     p.theta.push_back(theta);
-    if (pde_.rough()) p.rotation.push_back(std::max(U[pde_.rotationIndex(i)], 0.0));
+    if (pde_.rough()) p.rotation.push_back(pde_.rotationalTemperature(U.data(), i));
     p.area_fraction.push_back(m.areaFraction(rho));
     p.pressure.push_back(
         m.pressure(std::min(rho, 0.999999 * m.packingLimit() * m.mass / m.diskArea()), theta));
@@ -81,18 +82,12 @@ CvodeOptions HydroSimulation::solverOptions() const {
     for (int j = 0; j <= N; ++j) {
       co.atol[pde_.heightIndex(j)] = 100 * a * sigma;
       co.atol[pde_.velocityIndex(j)] = 100 * a * std::sqrt(g.gravity * sigma);
-      if (j < N) co.atol[pde_.temperatureIndex(j)] = a * g.gravity * sigma;
-      if (j < N && pde_.rough()) co.atol[pde_.rotationIndex(j)] = a * g.gravity * sigma;
+      // ln theta: an absolute error in it is a relative error of the temperature.
+      if (j < N) co.atol[pde_.temperatureIndex(j)] = 1e4 * a;
+      if (j < N && pde_.rough()) co.atol[pde_.rotationIndex(j)] = 1e4 * a;
     }
   }
   if (co.band_upper == 0) co.band_upper = co.band_lower = pde_.halfBand();
-  if (co.constraints.empty()) {  // theta > 0 (CVODE semantics 2.0); heights, velocities free
-    co.constraints.assign(pde_.size(), 0.0);
-    for (int i = 0; i < N; ++i) {
-      co.constraints[pde_.temperatureIndex(i)] = 2.0;
-      if (pde_.rough()) co.constraints[pde_.rotationIndex(i)] = 2.0;
-    }
-  }
   const double T = 2 * std::numbers::pi / g.omega;
   if (co.max_step == 0) co.max_step = T / (2 * opt_.samples_per_cycle);
   co.max_steps = opt_.max_steps_per_cycle;  // per output interval: at most a cycle's budget

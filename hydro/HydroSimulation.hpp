@@ -28,10 +28,14 @@ struct HydroRunOptions {
   double periodic_tolerance = 0.02;
   CvodeOptions cvode;  // tolerances, method; atol, band, Jacobian filled in if empty
   // atol = 100 atol_scale x (sigma, sqrt(g sigma)) for node heights and velocities and
-  // atol_scale x g sigma for temperatures when cvode.atol is empty: per-variable noise levels.
+  // 1e4 atol_scale for the temperature unknowns ln theta (a relative error of theta) when
+  // cvode.atol is empty: per-variable noise levels.
   double atol_scale = 1e-8;
   bool exact_jacobian = true;  // false: CVODE's difference quotients (for comparison)
-  double initial_theta = 0;    // m^2/s^2 of the settled layer; 0 = 1e-3 g sigma
+  double initial_theta = 0;    // m^2/s^2 of the starting layer; 0 = 1e-3 g sigma
+  // The starting layer: settled on the plate (hydro/SettledLayer.hpp, settledLayer), or spread
+  // evenly over the container as the particle engine places its grains (spreadLayer).
+  enum class Start { Settled, Spread } start = Start::Settled;
   long max_steps_per_cycle = 10000;
 };
 

@@ -86,8 +86,22 @@ hydro::HydroGeometry geometry(const Scene& scene, const SceneDerived& dv) {
   return geom;
 }
 
-hydro::HydroRunOptions runOptions(const Scene& scene) {
+// The numerical parameters of the discrete operator (docs/hydro.md, "Sensitivity").
+hydro::HydroRegularisation regularisation(const Scene& scene) {
+  hydro::HydroRegularisation r;
+  r.quadratic_viscosity = scene.hydro.artificial_viscosity;
+  r.wall_contact_range = scene.hydro.wall_contact_range;
+  r.wall_contact_stiffness = scene.hydro.wall_contact_stiffness;
+  r.packing_width = scene.hydro.packing_width;
+  r.temperature_floor = scene.hydro.temperature_floor;
+  return r;
+}
+
+hydro::HydroRunOptions runOptions(const Scene& scene, const SceneDerived& dv) {
   hydro::HydroRunOptions ro;
+  ro.initial_theta = scene.hydro.initial_temperature * dv.T0 / dv.mass;  // T0 = m theta0
+  ro.start = scene.hydro.start == HydroStart::Spread ? hydro::HydroRunOptions::Start::Spread
+                                                     : hydro::HydroRunOptions::Start::Settled;
   ro.samples_per_cycle = scene.run.phases_per_cycle;
   ro.max_cycles =
       std::max(8, static_cast<int>(std::floor(scene.run.duration * scene.drive.frequency)));
@@ -219,8 +233,9 @@ int runHydro(const HydroOptions& opt) {
         opt.scene_path + ": granwave hydro needs bottom and lid (container.periodic_z = false)");
   const SceneDerived dv = derive(scene);
   const hydro::GranularHydro1D pde(geometry(scene, dv), constitutiveModel(scene, dv),
-                                   scene.particles.count * dv.mass / scene.container.width);
-  const hydro::HydroRunOptions ro = runOptions(scene);
+                                   scene.particles.count * dv.mass / scene.container.width,
+                                   regularisation(scene));
+  const hydro::HydroRunOptions ro = runOptions(scene, dv);
   hydro::HydroSimulation sim(pde, ro);
   if (!opt.quiet)
     fmt::print(stderr, "  integrating up to {} cycles ({} cells)...\n", ro.max_cycles,
