@@ -195,8 +195,9 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
   cellStates(U, w);
   heatFluxes<S>(N, w);
-  const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
-                                             w.rho[0], sigma, scale, u_width, 0.5 * m_c_, numerics_);
+  const WallExchange<S> plate =
+      wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0], w.rho[0], sigma, scale,
+                   u_width, 0.5 * m_c_, numerics_);
   const WallExchange<S> lid =
       wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
                    w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_, numerics_);

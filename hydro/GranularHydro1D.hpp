@@ -94,8 +94,8 @@ using BandWriter = std::function<void(int row, int column, double value)>;
 class GranularHydro1D {
  public:
   // column_mass = M, kg/m.
-  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model,
-                  double column_mass, const HydroRegularisation& regularisation = {});
+  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model, double column_mass,
+                  const HydroRegularisation& regularisation = {});
   ~GranularHydro1D();
   GranularHydro1D(const GranularHydro1D&) = delete;
   GranularHydro1D& operator=(const GranularHydro1D&) = delete;

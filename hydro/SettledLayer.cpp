@@ -59,8 +59,10 @@ std::vector<double> spreadLayer(const GranularHydro1D& pde, double theta) {
   // Out of reach of both wall contacts, so the layer starts free.
   const double gap = 2 * pde.regularisation().wall_contact_range * sigma;
   const double spacing = (g.height - 2 * gap) / g.cells;
-  if (pde.cellMass() / spacing >= pde.model().packingLimit() * pde.model().mass / pde.model().diskArea())
-    throw std::invalid_argument("the layer spread over the container would be packed past close packing");
+  if (pde.cellMass() / spacing >=
+      pde.model().packingLimit() * pde.model().mass / pde.model().diskArea())
+    throw std::invalid_argument(
+        "the layer spread over the container would be packed past close packing");
   std::vector<double> U(pde.size(), 0.0);
   for (int j = 0; j <= g.cells; ++j) {
     U[pde.heightIndex(j)] = gap + j * spacing;

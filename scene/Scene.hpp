@@ -99,7 +99,8 @@ struct HydroSpec {
   HydroTransport transport = HydroTransport::JenkinsRichman;
   bool side_walls = false;  // side-wall dissipation as a volumetric sink (x not periodic)
   HydroPairCorrelation pair_correlation = HydroPairCorrelation::Luding;
-  double contact_pressure = 0.0;  // scale of an elastic contact pressure in rho_cp g sigma (0 = none)
+  double contact_pressure =
+      0.0;  // scale of an elastic contact pressure in rho_cp g sigma (0 = none)
   HydroParticles particles = HydroParticles::Smooth;  // rough: rotation as a field
   // Where the run starts: the layer settled on the plate, or spread evenly over the container
   // as the particle engine places its grains; at this granular temperature, in T0 = m v0^2 / 2.
@@ -107,11 +108,11 @@ struct HydroSpec {
   double initial_temperature = 1e-4;
   // The numerical parameters of the discrete operator (hydro/GranularHydro1D.hpp,
   // HydroRegularisation); docs/hydro.md shows the answers do not depend on them.
-  double artificial_viscosity = 0.25;   // c2 of q = rho c2 du^2
-  double wall_contact_range = 0.05;     // sigma
-  double wall_contact_stiffness = 0.01; // sigma
-  double packing_width = 1e-4;          // of the close-packed density
-  double temperature_floor = 1e-30;     // g sigma
+  double artificial_viscosity = 0.25;    // c2 of q = rho c2 du^2
+  double wall_contact_range = 0.05;      // sigma
+  double wall_contact_stiffness = 0.01;  // sigma
+  double packing_width = 1e-4;           // of the close-packed density
+  double temperature_floor = 1e-30;      // g sigma
 };
 
 struct Scene {

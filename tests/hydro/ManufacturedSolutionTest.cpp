@@ -44,7 +44,8 @@ Errors truncationError(int cells) {
   for (int j = 0; j <= cells; ++j) {
     U[pde.heightIndex(j)] = heightOfMass(M * j / cells);
     if (j < cells)
-      U[pde.temperatureIndex(j)] = pde.temperatureUnknown(thetaStar(heightOfMass(M * (j + 0.5) / cells)));
+      U[pde.temperatureIndex(j)] =
+          pde.temperatureUnknown(thetaStar(heightOfMass(M * (j + 0.5) / cells)));
   }
   EXPECT_EQ(pde.rightHandSide(0.0, U.data(), R.data()), 0);
   const double dz = 1e-5 * kL;
