@@ -62,13 +62,15 @@ struct GranularHydro1D::JetWorkspace {
 };
 
 GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model,
-                                 double column_mass, const HydroRegularisation& numerics)
+                                 double column_mass, const HydroRegularisation& numerics,
+                                 bool energy_budget)
     : g_(g),
       model_(model),
       numerics_(numerics),
       m_c_(column_mass / g.cells),
       vars_(model.rough.enabled ? 4 : 3),
       theta_unit_(std::max(g.gravity, 1.0) * model.sigma),
+      energy_budget_(energy_budget),
       reg_{model.packingLimit() * model.mass / model.diskArea(),
            numerics.packing_width * model.mass / model.diskArea(),
            1e-6 * model.sigma,
@@ -189,8 +191,9 @@ void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
 
 template <class S>
 int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) const {
-  for (int k = 0; k < size(); ++k)
+  for (int k = 0; k < layerSize(); ++k)
     if (!std::isfinite(value(U[k]))) return 1;
+  for (int k = layerSize(); k < size(); ++k) dU[k] = constantLike(U[0], 0.0);  // quadratures
   const int N = g_.cells;
   const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
   cellStates(U, w);
@@ -230,9 +233,62 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
     dU[temperatureIndex(i)] += w.exchange[i] / theta;
     dU[rotationIndex(i)] = w.spin[i] / (theta_unit_ * exp(U[rotationIndex(i)]));
   }
-  for (int k = 0; k < size(); ++k)
+  for (int k = 0; k < layerSize(); ++k)
     if (!std::isfinite(value(dU[k]))) return 1;
   return 0;
+}
+
+GranularHydro1D::EnergyRates GranularHydro1D::energyRates(double t, const double* U) const {
+  Workspace<double>& w = *values_;
+  const int N = g_.cells;
+  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
+  cellStates(U, w);
+  const WallExchange<double> plate =
+      wallExchange(U[heightIndex(0)], -U[velocityIndex(0)], w.local[0], w.rho[0], sigma, scale,
+                   u_width, 0.5 * m_c_, numerics_);
+  const WallExchange<double> lid =
+      wallExchange(g_.height - U[heightIndex(N)], U[velocityIndex(N)], w.local[N - 1], w.rho[N - 1],
+                   sigma, scale, u_width, 0.5 * m_c_, numerics_);
+  EnergyRates r;
+  // The plate pushes node 0 up and the lid pushes node N down; both move with the plate.
+  r.plate_work = (plate.stress - lid.stress) * g_.plateVelocity(t);
+  r.wall_loss = plate.loss + lid.loss;
+  for (int i = 0; i < N; ++i) {
+    const LocalState<double>& l = w.local[i];
+    r.collisional_loss += l.cooling * w.length[i];
+    if (model_.side_wall_width > 0)
+      r.side_wall_loss += 2.0 / model_.side_wall_width * l.wall_loss * l.p_kinetic * w.length[i];
+    // Per unit mass: translation theta, rotation theta_r / 2 (one rotational degree of freedom).
+    if (rough()) r.friction_loss -= m_c_ * (w.exchange[i] + 0.5 * w.spin[i]);
+  }
+  return r;
+}
+
+double GranularHydro1D::labEnergy(double t, const double* U) const {
+  const int N = g_.cells;
+  const double zb = g_.plateHeight(t), vb = g_.plateVelocity(t), g = g_.gravity;
+  double E = 0;
+  for (int j = 0; j <= N; ++j) {
+    const double m = j == 0 || j == N ? 0.5 * m_c_ : m_c_, u = U[velocityIndex(j)] + vb;
+    E += 0.5 * m * u * u + m * g * (U[heightIndex(j)] + zb);
+    if (j == N) break;
+    E += m_c_ * temperature(U, j);
+    if (rough()) E += 0.5 * m_c_ * rotationalTemperature(U, j);
+  }
+  return E + contactEnergy(U[heightIndex(0)]) + contactEnergy(g_.height - U[heightIndex(N)]);
+}
+
+double GranularHydro1D::contactEnergy(double gap) const {
+  // The integral of the elastic stress from the gap out to the end of the contact's range
+  // (Simpson's rule; the stress is a smooth cubic of the penetration there).
+  const double end = 1.2 * numerics_.wall_contact_range * model_.sigma;
+  if (gap >= end) return 0;
+  const int n = 200;
+  const double h = (end - gap) / n;
+  double sum = 0;
+  for (int k = 0; k <= n; ++k)
+    sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * contactStress(gap + k * h, 0, 0, 0);
+  return sum * h / 3;
 }
 
 GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {
@@ -251,7 +307,13 @@ double GranularHydro1D::spacingFor(double rho_eff) const {
 double GranularHydro1D::effectiveTemperature(double theta) const { return theta + reg_.theta_min; }
 
 int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {
-  return residual(t, U, dUdt, *values_);
+  const int status = residual(t, U, dUdt, *values_);
+  if (status != 0 || !energy_budget_) return status;
+  const EnergyRates r = energyRates(t, U);
+  const double rates[kBudgetTerms] = {r.plate_work, r.collisional_loss, r.friction_loss,
+                                      r.wall_loss, r.side_wall_loss};
+  for (int k = 0; k < kBudgetTerms; ++k) dUdt[budgetIndex(k)] = rates[k];
+  return 0;
 }
 
 template <int Colours>

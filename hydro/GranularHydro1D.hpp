@@ -94,8 +94,10 @@ using BandWriter = std::function<void(int row, int column, double value)>;
 class GranularHydro1D {
  public:
   // column_mass = M, kg/m.
+  // energy_budget: the state carries the running integrals of the energy rates (EnergyRates,
+  // below) as kBudgetTerms quadrature unknowns after the layer's, which nothing else depends on.
   GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model, double column_mass,
-                  const HydroRegularisation& regularisation = {});
+                  const HydroRegularisation& regularisation = {}, bool energy_budget = false);
   ~GranularHydro1D();
   GranularHydro1D(const GranularHydro1D&) = delete;
   GranularHydro1D& operator=(const GranularHydro1D&) = delete;
@@ -103,7 +105,12 @@ class GranularHydro1D {
   int cells() const { return g_.cells; }
   // Unknowns per block: 3 (z, u, theta), 4 with the rotational temperature.
   int variables() const { return vars_; }
-  int size() const { return vars_ * g_.cells + 2; }
+  int size() const { return layerSize() + (energy_budget_ ? kBudgetTerms : 0); }
+  int layerSize() const { return vars_ * g_.cells + 2; }  // the layer's unknowns
+  // The energy-budget quadratures, J/m since the start, in the order of EnergyRates.
+  static constexpr int kBudgetTerms = 5;
+  bool hasEnergyBudget() const { return energy_budget_; }
+  int budgetIndex(int term) const { return layerSize() + term; }
   int halfBand() const { return 3 * vars_ - 1; }
   bool rough() const { return vars_ == 4; }
   double cellMass() const { return m_c_; }
@@ -164,6 +171,24 @@ class GranularHydro1D {
 
   std::string componentName(int k) const;
 
+  // The powers that change the layer's energy in the lab frame (per unit width, W/m) at (t, U):
+  // dE/dt = plate_work - collisional_loss - friction_loss - wall_loss - side_wall_loss, E the
+  // lab-frame kinetic, potential, internal (m theta per particle), rotational (m theta_r / 2)
+  // and wall-contact elastic energy. The artificial viscosity and the walls' dashpots turn
+  // kinetic energy into heat: they move energy inside the layer and are not losses.
+  struct EnergyRates {
+    double plate_work = 0;        // the plate's and the lid's contact force times their velocity
+    double collisional_loss = 0;  // sum of D_c l: the normal inelasticity of pair collisions
+    double friction_loss = 0;     // rough particles: the tangential (friction) part
+    double wall_loss = 0;         // the particles' collisions with the plate and the lid
+    double side_wall_loss = 0;    // the side walls' sink
+  };
+  EnergyRates energyRates(double t, const double* U) const;
+  // E of the state U at time t (J/m), the energy the rates above change.
+  double labEnergy(double t, const double* U) const;
+  // The elastic energy stored in a wall contact at this gap (J/m).
+  double contactEnergy(double gap) const;
+
  private:
   template <class S>
   struct Workspace;
@@ -187,6 +212,7 @@ class GranularHydro1D {
   double m_c_;
   int vars_;
   double theta_unit_;  // g sigma: the unit of the temperature unknowns
+  bool energy_budget_;
   Regularisation reg_;
   std::unique_ptr<Workspace<double>> values_;
   std::unique_ptr<JetWorkspace<15>> smooth_jets_;  // 5 block colours x 3 unknowns

@@ -39,6 +39,19 @@ struct HydroRunOptions {
   long max_steps_per_cycle = 10000;
 };
 
+// The energy that crossed the layer's budget over one phase interval (J/m), and its closure;
+// filled when the operator carries its energy-budget quadratures (GranularHydro1D,
+// energy_budget), which CVODE integrates with the layer.
+struct PhaseBudget {
+  double plate_work = 0, collisional_loss = 0, friction_loss = 0, wall_loss = 0, side_wall_loss = 0;
+  double energy_change = 0;  // E(end) - E(start) of the interval, lab frame
+  // energy_change - (plate_work - losses): the integration error of the budget.
+  double closure() const {
+    return energy_change -
+           (plate_work - collisional_loss - friction_loss - wall_loss - side_wall_loss);
+  }
+};
+
 // What the layer does over the final window.
 enum class HydroRegime {
   Fluidised,  // part of the layer dilates below the contact onset during the cycle
@@ -57,6 +70,7 @@ struct HydroPhase {
   double layer_bottom = 0, layer_top = 0;  // the boundary nodes, plate frame, m
   std::vector<double> z, n, u, theta, area_fraction, pressure;
   std::vector<double> rotation;  // theta_r, m^2/s^2 (rough particles; empty otherwise)
+  PhaseBudget budget;            // over the interval ending at this phase (energy budget on)
 };
 
 struct HydroResult {
@@ -93,6 +107,8 @@ class HydroSimulation {
 
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
+  // Advances to t; with the energy budget, what crossed it since the last output.
+  PhaseBudget advanceWithBudget(CvodeIntegrator& cv, double t) const;
   CvodeOptions solverOptions() const;
   int detectPeriod(const std::vector<double>& com) const;
   HydroRegime classify(const std::vector<HydroPhase>& window) const;

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the hydro tests: the paper's glass beads, a constitutive model built from a pair
-// and a wall restitution law (Knudsen limiter at one diameter and the contact pressure, as
-// `granwave hydro`), and uniform or settled states of the Lagrangian operator.
+// and a wall restitution law (Knudsen limiter at one diameter, no elastic contact pressure, as
+// `granwave hydro` by default), and uniform or settled states of the Lagrangian operator.
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -25,7 +25,6 @@ inline ConstitutiveModel beadModel(RestitutionClosure pairs, RestitutionClosure 
   m.restitution = pairs;
   m.wall_restitution = walls;
   m.knudsen_length = kD;
-  m.contact.scale = kRhoCp * 9.81 * kD;
   return m;
 }
 
