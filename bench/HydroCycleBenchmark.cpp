@@ -1,6 +1,6 @@
 // CPU per drive cycle of the continuum solver (docs/performance.md, "Hydrodynamic solver").
 //
-//  BM_HydroCycle/<dry|wet>/<smooth|rough>  the paper's scene (scenes/paper-dry.toml and
+//  BM_HydroCycle/<dry|wet>_<smooth|rough>  the paper's scene (scenes/paper-dry.toml and
 //      paper-wet.toml, hydro.particles as named), 100 cells, rtol 1e-4, as `granwave hydro`
 //      sets it up: from the settled layer, the drive ramped up over two cycles, then six more,
 //      a fixed 8 cycles (the dry smooth scene reaches its periodic state there). Timed: the
@@ -92,16 +92,16 @@ void BM_HydroCycle(benchmark::State& state, const std::string& law, const std::s
 
 }  // namespace
 
-BENCHMARK_CAPTURE(BM_HydroCycle, dry / smooth, std::string("dry"), std::string("smooth"))
+BENCHMARK_CAPTURE(BM_HydroCycle, dry_smooth, std::string("dry"), std::string("smooth"))
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
-BENCHMARK_CAPTURE(BM_HydroCycle, dry / rough, std::string("dry"), std::string("rough"))
+BENCHMARK_CAPTURE(BM_HydroCycle, dry_rough, std::string("dry"), std::string("rough"))
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
-BENCHMARK_CAPTURE(BM_HydroCycle, wet / smooth, std::string("wet"), std::string("smooth"))
+BENCHMARK_CAPTURE(BM_HydroCycle, wet_smooth, std::string("wet"), std::string("smooth"))
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
-BENCHMARK_CAPTURE(BM_HydroCycle, wet / rough, std::string("wet"), std::string("rough"))
+BENCHMARK_CAPTURE(BM_HydroCycle, wet_rough, std::string("wet"), std::string("rough"))
     ->Unit(benchmark::kSecond)
     ->Iterations(1);
 
