@@ -184,8 +184,8 @@ void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
     if (!rough()) continue;
     const S spin = theta_unit_ * exp(U[rotationIndex(i)]) + reg_.theta_min;
     const S nu = c.rho * (model_.diskArea() / model_.mass);
-    model_.rough.rates(nu, model_.pair_correlation.g2(nu), model_.restitution.phiP(c.theta),
-                       c.theta, spin, model_.sigma, w.exchange[i], w.spin[i]);
+    model_.rough.rates(nu, w.local[i].g2, w.local[i].phi_p, c.theta, spin, model_.sigma,
+                       w.exchange[i], w.spin[i]);
   }
 }
 
