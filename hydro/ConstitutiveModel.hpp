@@ -30,6 +30,8 @@ struct LocalState {
   S sound_speed;        // adiabatic, m/s (contact part included)
   S isothermal_speed2;  // dp/drho at fixed theta, m^2/s^2
   S wall_loss;          // Phi_W^wall sqrt(theta/(2 pi)), m/s: energy flux into a wall per p_kinetic
+  S g2;                 // the pair correlation at the cell's area fraction
+  S phi_p;              // <1 + e>_P at the cell's temperature
 };
 
 struct ConstitutiveModel {
@@ -68,9 +70,11 @@ LocalState<S> ConstitutiveModel::evaluate(const S& rho, const S& theta) const {
   using std::sqrt;
   const DiskGas gas{mass, sigma};
   const S nu = rho * (diskArea() / mass);
-  const S g2 = pair_correlation.g2(nu);
-  const S phi_w = restitution.phiW(theta);
-  const S phi_p = restitution.phiP(theta);
+  S g2, dg2;
+  pair_correlation.g2WithDerivative(nu, g2, dg2);
+  const MaxwellAveragesOf<S> averages = restitution.averagesOf(theta);
+  const S& phi_w = averages.phi_w;
+  const S& phi_p = averages.phi_p;
   const Transport<S> t = transport == TransportSet::GarzoDufty
                              ? garzoDufty(gas, rho, theta, g2, phi_w, phi_p)
                              : jenkinsRichman(gas, rho, theta, g2, phi_w, phi_p);
@@ -82,8 +86,8 @@ LocalState<S> ConstitutiveModel::evaluate(const S& rho, const S& theta) const {
   // Sound speeds of p = n T F + p_c, F = 1 + Phi_P nu g2 (d = 2, docs/hydro.md):
   //   c_T^2 = theta (F + nu F_nu) + dp_c/drho,  c_s^2 = c_T^2 + theta F (F + theta F_theta).
   const S F = 1.0 + phi_p * nu * g2;
-  const S nuF_nu = nu * phi_p * (g2 + nu * pair_correlation.dg2(nu));
-  const S thetaF_theta = theta * restitution.dPhiPdTheta(theta) * nu * g2;
+  const S nuF_nu = nu * phi_p * (g2 + nu * dg2);
+  const S thetaF_theta = theta * averages.dphi_p * nu * g2;
   const S dpc_drho = contact.derivative(nu) * (diskArea() / mass);
   LocalState<S> s;
   s.p_kinetic = t.p;
@@ -93,7 +97,11 @@ LocalState<S> ConstitutiveModel::evaluate(const S& rho, const S& theta) const {
   s.cooling = t.D_c;
   s.isothermal_speed2 = theta * (F + nuF_nu) + dpc_drho;
   s.sound_speed = sqrt(s.isothermal_speed2 + theta * F * (F + thetaF_theta));
-  s.wall_loss = wall_restitution.phiWall(theta) * sqrt(theta / (2 * std::numbers::pi));
+  const S phi_wall =
+      wall_restitution == restitution ? averages.phi_wall : wall_restitution.phiWall(theta);
+  s.wall_loss = phi_wall * sqrt(theta / (2 * std::numbers::pi));
+  s.g2 = g2;
+  s.phi_p = phi_p;
   return s;
 }
 

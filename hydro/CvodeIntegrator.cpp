@@ -4,7 +4,6 @@
 #include <cvode/cvode_bandpre.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
-#include <sunlinsol/sunlinsol_band.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 #include <sunmatrix/sunmatrix_band.h>
 #include <sunnonlinsol/sunnonlinsol_fixedpoint.h>
@@ -12,6 +11,8 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+
+#include "hydro/SundialsKernels.hpp"
 
 namespace granwave::hydro {
 
@@ -138,6 +139,8 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
   m.y = N_VNew_Serial(m.n, m.ctx);
   m.abstol = N_VNew_Serial(m.n, m.ctx);
   if (!m.y || !m.abstol) m.fail("N_VNew_Serial", -20);
+  useCompiledKernels(m.y);  // CVODE's work vectors are clones of y: they inherit the kernels
+  useCompiledKernels(m.abstol);
   std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(m.y));
   std::copy(o.atol.begin(), o.atol.end(), N_VGetArrayPointer(m.abstol));
 
@@ -153,8 +156,10 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
   switch (o.method) {
     case CvodeMethod::BdfBanded:
       m.A = SUNBandMatrix(m.n, o.band_upper, o.band_lower, m.ctx);
-      m.LS = SUNLinSol_Band(m.y, m.A, m.ctx);
-      if (!m.A || !m.LS) m.fail("SUNLinSol_Band", -20);
+      if (!m.A) m.fail("SUNBandMatrix", -20);
+      useCompiledKernels(m.A);
+      m.LS = bandLuSolver(m.A, m.ctx);
+      if (!m.LS) m.fail("bandLuSolver", -20);
       m.check(CVodeSetLinearSolver(m.cvode, m.LS, m.A), "CVodeSetLinearSolver");
       if (o.jacobian) {
         m.jacobian = o.jacobian;
@@ -182,6 +187,8 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
     if (o.constraints.size() != y0.size())
       throw std::invalid_argument("CVODE constraints: one entry per component");
     m.constraints = N_VNew_Serial(m.n, m.ctx);
+    if (!m.constraints) m.fail("N_VNew_Serial", -20);
+    useCompiledKernels(m.constraints);
     std::copy(o.constraints.begin(), o.constraints.end(), N_VGetArrayPointer(m.constraints));
     m.check(CVodeSetConstraints(m.cvode, m.constraints), "CVodeSetConstraints");
   }

@@ -24,8 +24,8 @@ struct WallContact {
   S elastic, stiffness, indicator;  // stress, d(stress)/d(penetration) per metre, in contact
 };
 template <class S>
-WallContact<S> wallContact(const S& gap, double sigma, double scale) {
-  const double r = GranularHydro1D::kContactRange, p0 = GranularHydro1D::kContactStiffness;
+WallContact<S> wallContact(const S& gap, double sigma, double scale, const HydroRegularisation& n) {
+  const double r = n.wall_contact_range, p0 = n.wall_contact_stiffness;
   const S pen = smoothPositivePart(S(r - gap / sigma), 1e-3 * r);
   const S k = pen / p0;
   return {scale * k * k * k, 3.0 * scale * k * k / (p0 * sigma),
@@ -62,15 +62,19 @@ struct GranularHydro1D::JetWorkspace {
 };
 
 GranularHydro1D::GranularHydro1D(const HydroGeometry& g, const ConstitutiveModel& model,
-                                 double column_mass)
+                                 double column_mass, const HydroRegularisation& numerics,
+                                 bool energy_budget)
     : g_(g),
       model_(model),
+      numerics_(numerics),
       m_c_(column_mass / g.cells),
       vars_(model.rough.enabled ? 4 : 3),
+      theta_unit_(std::max(g.gravity, 1.0) * model.sigma),
+      energy_budget_(energy_budget),
       reg_{model.packingLimit() * model.mass / model.diskArea(),
-           1e-4 * model.mass / model.diskArea(),
+           numerics.packing_width * model.mass / model.diskArea(),
            1e-6 * model.sigma,
-           1e-8 * std::max(g.gravity, 1.0) * model.sigma,
+           numerics.temperature_floor * std::max(g.gravity, 1.0) * model.sigma,
            1e-4 * std::sqrt(std::max(g.gravity, 1.0) * model.sigma),
            closePackedDensity(model) * std::max(g.gravity, 1.0) * model.sigma},
       values_(std::make_unique<Workspace<double>>(g.cells)) {
@@ -97,7 +101,7 @@ std::string GranularHydro1D::componentName(int k) const {
 }
 
 double GranularHydro1D::contactStress(double gap, double speed, double rho, double c) const {
-  const WallContact<double> w = wallContact(gap, model_.sigma, reg_.contact_scale);
+  const WallContact<double> w = wallContact(gap, model_.sigma, reg_.contact_scale, numerics_);
   const double damping = rho * c + 2 * std::sqrt(w.stiffness * 0.5 * m_c_);
   return w.elastic + damping * std::max(speed, 0.0) * w.indicator;
 }
@@ -110,12 +114,18 @@ struct EffectiveCell {
   S rho, length, theta;
 };
 template <class S, class R>
-EffectiveCell<S> effectiveCell(const R& reg, double m_c, const S& z0, const S& z1, const S& theta) {
+EffectiveCell<S> effectiveCell(const R& reg, double m_c, double theta_unit, const S& z0,
+                               const S& z1, const S& s) {
+  using std::exp;
   using std::sqrt;
   const S length = smoothPositivePart(S(z1 - z0), reg.length_floor);
   const S gap = (reg.rho_max - m_c / length) / reg.packing_width;
-  const S rho = reg.rho_max - reg.packing_width * 0.5 * (gap + sqrt(gap * gap + 4.0));
-  return {rho, length, reg.theta_min + smoothPositivePart(S(theta - reg.theta_min), reg.theta_min)};
+  // s(x) = (x + sqrt(x^2 + 4))/2 = 2/(sqrt(x^2 + 4) - x): the second form keeps its digits
+  // when the cell is packed past close packing (x << 0), where the first cancels to 0.
+  const S map = value(gap) >= 0 ? S(0.5 * (gap + sqrt(gap * gap + 4.0)))
+                                : S(2.0 / (sqrt(gap * gap + 4.0) - gap));
+  const S rho = reg.rho_max - reg.packing_width * map;
+  return {rho, length, S(theta_unit * exp(s) + reg.theta_min)};
 }
 
 // Heat fluxes through interior nodes, central in the temperature.
@@ -141,9 +151,9 @@ struct WallExchange {
 template <class S>
 WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S>& cell,
                              const S& rho, double sigma, double scale, double u_width,
-                             double node_mass) {
+                             double node_mass, const HydroRegularisation& numerics) {
   using std::sqrt;
-  const WallContact<S> c = wallContact(gap, sigma, scale);
+  const WallContact<S> c = wallContact(gap, sigma, scale, numerics);
   const S step = 0.5 * (1.0 + approach / smoothAbs(approach, u_width));
   const S damping = rho * cell.sound_speed + 2.0 * sqrt(c.stiffness * node_mass + 1e-30);
   const S dashpot = damping * approach * step * c.indicator;
@@ -155,43 +165,45 @@ WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S
 // Cells: density, temperature, closures, stress, and the rough particles' exchange.
 template <class S>
 void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
-  const double c2 = kQuadraticViscosity, c1 = kLinearViscosity;
+  using std::exp;
+  const double c2 = numerics_.quadratic_viscosity;
   for (int i = 0; i < g_.cells; ++i) {
-    const EffectiveCell<S> c =
-        effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+    const EffectiveCell<S> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
+                                             U[heightIndex(i + 1)], U[temperatureIndex(i)]);
     w.rho[i] = c.rho;
     w.length[i] = c.length;
     w.theta[i] = c.theta;
     w.local[i] = model_.evaluate(c.rho, c.theta);
     const S du = U[velocityIndex(i + 1)] - U[velocityIndex(i)];
-    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho (c2 du^2 + c1 c |du|) there and
-    // exactly 0 at du = 0, so a resting layer feels none.
+    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho c2 du^2 there and exactly 0 at
+    // du = 0, so a resting layer feels none.
     const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg_.u_width));
-    const S q = c.rho * compression * (c2 * du * du - c1 * w.local[i].sound_speed * du);
+    const S q = c.rho * compression * c2 * du * du;
     w.du[i] = du;
     w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
     if (!rough()) continue;
-    const S& theta_r = U[rotationIndex(i)];
-    const S spin = reg_.theta_min + smoothPositivePart(S(theta_r - reg_.theta_min), reg_.theta_min);
+    const S spin = theta_unit_ * exp(U[rotationIndex(i)]) + reg_.theta_min;
     const S nu = c.rho * (model_.diskArea() / model_.mass);
-    model_.rough.rates(nu, model_.pair_correlation.g2(nu), model_.restitution.phiP(c.theta),
-                       c.theta, spin, model_.sigma, w.exchange[i], w.spin[i]);
+    model_.rough.rates(nu, w.local[i].g2, w.local[i].phi_p, c.theta, spin, model_.sigma,
+                       w.exchange[i], w.spin[i]);
   }
 }
 
 template <class S>
 int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) const {
-  for (int k = 0; k < size(); ++k)
+  for (int k = 0; k < layerSize(); ++k)
     if (!std::isfinite(value(U[k]))) return 1;
+  for (int k = layerSize(); k < size(); ++k) dU[k] = constantLike(U[0], 0.0);  // quadratures
   const int N = g_.cells;
   const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
   cellStates(U, w);
   heatFluxes<S>(N, w);
-  const WallExchange<S> plate = wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0],
-                                             w.rho[0], sigma, scale, u_width, 0.5 * m_c_);
+  const WallExchange<S> plate =
+      wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0], w.rho[0], sigma, scale,
+                   u_width, 0.5 * m_c_, numerics_);
   const WallExchange<S> lid =
       wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
-                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_);
+                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_, numerics_);
   w.heat[0] = -plate.loss;  // the energy the collisions take leaves through the walls
   w.heat[N] = lid.loss;
   const double geff = effectiveGravity(t);
@@ -213,19 +225,75 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
       power -= 2.0 / model_.side_wall_width * l.wall_loss * l.p_kinetic * w.length[i];
     if (i == 0) power += plate.heating;
     if (i == N - 1) power += lid.heating;
-    dU[temperatureIndex(i)] = power / m_c_;
+    // d(ln theta)/dt = (d theta/dt) / theta, with the theta the unknown holds (without the
+    // closures' floor), so that m_c theta ds/dt is exactly the cell's power.
+    const S theta = theta_unit_ * exp(U[temperatureIndex(i)]);
+    dU[temperatureIndex(i)] = power / (m_c_ * theta);
     if (!rough()) continue;
-    dU[temperatureIndex(i)] += w.exchange[i];
-    dU[rotationIndex(i)] = w.spin[i];
+    dU[temperatureIndex(i)] += w.exchange[i] / theta;
+    dU[rotationIndex(i)] = w.spin[i] / (theta_unit_ * exp(U[rotationIndex(i)]));
   }
-  for (int k = 0; k < size(); ++k)
+  for (int k = 0; k < layerSize(); ++k)
     if (!std::isfinite(value(dU[k]))) return 1;
   return 0;
 }
 
+GranularHydro1D::EnergyRates GranularHydro1D::energyRates(double t, const double* U) const {
+  Workspace<double>& w = *values_;
+  const int N = g_.cells;
+  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
+  cellStates(U, w);
+  const WallExchange<double> plate =
+      wallExchange(U[heightIndex(0)], -U[velocityIndex(0)], w.local[0], w.rho[0], sigma, scale,
+                   u_width, 0.5 * m_c_, numerics_);
+  const WallExchange<double> lid =
+      wallExchange(g_.height - U[heightIndex(N)], U[velocityIndex(N)], w.local[N - 1], w.rho[N - 1],
+                   sigma, scale, u_width, 0.5 * m_c_, numerics_);
+  EnergyRates r;
+  // The plate pushes node 0 up and the lid pushes node N down; both move with the plate.
+  r.plate_work = (plate.stress - lid.stress) * g_.plateVelocity(t);
+  r.wall_loss = plate.loss + lid.loss;
+  for (int i = 0; i < N; ++i) {
+    const LocalState<double>& l = w.local[i];
+    r.collisional_loss += l.cooling * w.length[i];
+    if (model_.side_wall_width > 0)
+      r.side_wall_loss += 2.0 / model_.side_wall_width * l.wall_loss * l.p_kinetic * w.length[i];
+    // Per unit mass: translation theta, rotation theta_r / 2 (one rotational degree of freedom).
+    if (rough()) r.friction_loss -= m_c_ * (w.exchange[i] + 0.5 * w.spin[i]);
+  }
+  return r;
+}
+
+double GranularHydro1D::labEnergy(double t, const double* U) const {
+  const int N = g_.cells;
+  const double zb = g_.plateHeight(t), vb = g_.plateVelocity(t), g = g_.gravity;
+  double E = 0;
+  for (int j = 0; j <= N; ++j) {
+    const double m = j == 0 || j == N ? 0.5 * m_c_ : m_c_, u = U[velocityIndex(j)] + vb;
+    E += 0.5 * m * u * u + m * g * (U[heightIndex(j)] + zb);
+    if (j == N) break;
+    E += m_c_ * temperature(U, j);
+    if (rough()) E += 0.5 * m_c_ * rotationalTemperature(U, j);
+  }
+  return E + contactEnergy(U[heightIndex(0)]) + contactEnergy(g_.height - U[heightIndex(N)]);
+}
+
+double GranularHydro1D::contactEnergy(double gap) const {
+  // The integral of the elastic stress from the gap out to the end of the contact's range
+  // (Simpson's rule; the stress is a smooth cubic of the penetration there).
+  const double end = 1.2 * numerics_.wall_contact_range * model_.sigma;
+  if (gap >= end) return 0;
+  const int n = 200;
+  const double h = (end - gap) / n;
+  double sum = 0;
+  for (int k = 0; k <= n; ++k)
+    sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * contactStress(gap + k * h, 0, 0, 0);
+  return sum * h / 3;
+}
+
 GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {
-  const EffectiveCell<double> c =
-      effectiveCell(reg_, m_c_, U[heightIndex(i)], U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+  const EffectiveCell<double> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
+                                                U[heightIndex(i + 1)], U[temperatureIndex(i)]);
   return {c.rho, c.theta};
 }
 
@@ -236,13 +304,16 @@ double GranularHydro1D::spacingFor(double rho_eff) const {
   return length - w * w / (4 * length);  // smoothPositivePart(l, w) = length
 }
 
-double GranularHydro1D::effectiveTemperature(double theta) const {
-  const double x = theta - reg_.theta_min;
-  return reg_.theta_min + 0.5 * (x + std::sqrt(x * x + reg_.theta_min * reg_.theta_min));
-}
+double GranularHydro1D::effectiveTemperature(double theta) const { return theta + reg_.theta_min; }
 
 int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {
-  return residual(t, U, dUdt, *values_);
+  const int status = residual(t, U, dUdt, *values_);
+  if (status != 0 || !energy_budget_) return status;
+  const EnergyRates r = energyRates(t, U);
+  const double rates[kBudgetTerms] = {r.plate_work, r.collisional_loss, r.friction_loss,
+                                      r.wall_loss, r.side_wall_loss};
+  for (int k = 0; k < kBudgetTerms; ++k) dUdt[budgetIndex(k)] = rates[k];
+  return 0;
 }
 
 template <int Colours>

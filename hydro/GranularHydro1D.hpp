@@ -4,7 +4,7 @@
 // (docs/hydro.md, "Model"). The layer of mass M per unit width is cut into N cells of equal
 // mass m_c = M/N; nodes j = 0..N at heights z_j with velocities u_j bound the cells, cell i
 // (nodes i, i+1) has length l_i = z_{i+1} - z_i, density rho_i = m_c/l_i and temperature
-// theta_i:
+// theta_i, carried as s_i = ln(theta_i / (g sigma)):
 //
 //   dz_j/dt     = u_j
 //   du_j/dt     = -(Pi_j - Pi_{j-1}) / m_c - g_eff(t)                (interior nodes)
@@ -31,10 +31,18 @@
 // Rough particles (ConstitutiveModel::rough) add the rotational temperature theta_r of each
 // cell, changed only by collisions (hydro/RoughCollisions.hpp; its transport is neglected).
 //
-// Unknowns interleaved per block j = [z_j, u_j, theta_j (, theta_r,j)] (the last block,
+// Why ln theta: a granular temperature is positive, and a dense cell cools as theta^(3/2)
+// with a rate that diverges at close packing; in ln theta the state is admissible by
+// construction (no floor, no solver constraint), the cooling is a bounded rate
+// d(ln theta)/dt = -k theta^(1/2), and a cold cell's error is measured relative to its own
+// temperature. The equations are the same: d(m_c theta)/dt = m_c theta ds/dt = the cell's
+// power, so the energy identities below hold unchanged (docs/hydro.md, "Admissible states").
+//
+// Unknowns interleaved per block j = [z_j, u_j, s_j (, s_r,j = ln theta_r,j)] (the last block,
 // j = N, holds only z_N, u_N), so the Jacobian is banded (half-bandwidth 3 K - 1 for K
 // unknowns per block) and computed exactly by forward-mode differentiation of the same code
 // (hydro/Scalar.hpp).
+#include <cmath>
 #include <functional>
 #include <memory>
 #include <string>
@@ -58,26 +66,38 @@ struct HydroGeometry {
   double plateAcceleration(double t) const;
 };
 
+// The numerical parameters of the discrete operator. None of them is physics: the answers
+// (periods, fronts, the centre-of-mass trajectory) must not move when one is halved or
+// doubled, and docs/hydro.md ("Sensitivity to the numerical parameters") shows that they do not.
+struct HydroRegularisation {
+  // c2 of the artificial viscosity q = rho c2 du^2 in compressing cells (Caramana, Shashkov &
+  // Whalen, J. Comput. Phys. 144, 70 (1998), the 1D quadratic form): it spreads a shock the
+  // physical viscosity does not resolve over a few cells; its work heats the cell.
+  double quadratic_viscosity = 0.25;
+  // The plate and the lid push on the boundary node within `wall_contact_range` diameters of
+  // them, with the stress P_c (p/wall_contact_stiffness)^3 at a penetration p into that range
+  // (P_c = rho_cp g sigma, the weight per unit length of one close-packed row).
+  double wall_contact_range = 0.05;
+  double wall_contact_stiffness = 0.01;
+  // Close packing as a constraint: the closures see the density through
+  // rho_eff = rho_max - d s((rho_max - rho)/d), s(x) = (x + sqrt(x^2 + 4))/2, with d this
+  // fraction of the close-packed density (cellView below).
+  double packing_width = 1e-4;
+  // Added to theta where the closures take its powers (in g sigma): only a guard against an
+  // iterate whose exp(s) underflows; 15 orders of magnitude below the coldest state a run reaches.
+  double temperature_floor = 1e-30;
+};
+
 // Writes one element of a banded Jacobian: (row, column, value).
 using BandWriter = std::function<void(int row, int column, double value)>;
 
 class GranularHydro1D {
  public:
-  // Artificial viscosity q = rho (c2 du^2 + c1 c_s |du|) in compression (Caramana, Shashkov
-  // & Whalen, J. Comput. Phys. 144, 70 (1998), the 1D forms). The physical viscosity already
-  // resolves the shocks on cells of ~0.1 sigma; measured on the paper's scene, the usual
-  // c2 = 1, c1 = 0.2 doubled the centre-of-mass error of 100 cells (5.4e-3 against 800 cells)
-  // against c2 = 0.25, c1 = 0 (1.7e-3), and both ran the whole stability grid (docs/hydro.md).
-  static constexpr double kQuadraticViscosity = 0.25, kLinearViscosity = 0.0;
-  // The wall contact acts within kContactRange particle diameters of a wall; its elastic
-  // stress is P_c (p/kContactStiffness)^3 at a penetration p into that range (in diameters),
-  // P_c = rho_cp g sigma: a layer of k close-packed rows rests 0.01 k^(1/3) sigma into it, a
-  // shock of 1000 P_c reaches 0.1 sigma.
-  static constexpr double kContactRange = 0.05, kContactStiffness = 0.01;
-
   // column_mass = M, kg/m.
-  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model,
-                  double column_mass);
+  // energy_budget: the state carries the running integrals of the energy rates (EnergyRates,
+  // below) as kBudgetTerms quadrature unknowns after the layer's, which nothing else depends on.
+  GranularHydro1D(const HydroGeometry& geometry, const ConstitutiveModel& model, double column_mass,
+                  const HydroRegularisation& regularisation = {}, bool energy_budget = false);
   ~GranularHydro1D();
   GranularHydro1D(const GranularHydro1D&) = delete;
   GranularHydro1D& operator=(const GranularHydro1D&) = delete;
@@ -85,13 +105,19 @@ class GranularHydro1D {
   int cells() const { return g_.cells; }
   // Unknowns per block: 3 (z, u, theta), 4 with the rotational temperature.
   int variables() const { return vars_; }
-  int size() const { return vars_ * g_.cells + 2; }
+  int size() const { return layerSize() + (energy_budget_ ? kBudgetTerms : 0); }
+  int layerSize() const { return vars_ * g_.cells + 2; }  // the layer's unknowns
+  // The energy-budget quadratures, J/m since the start, in the order of EnergyRates.
+  static constexpr int kBudgetTerms = 5;
+  bool hasEnergyBudget() const { return energy_budget_; }
+  int budgetIndex(int term) const { return layerSize() + term; }
   int halfBand() const { return 3 * vars_ - 1; }
   bool rough() const { return vars_ == 4; }
   double cellMass() const { return m_c_; }
   double columnMass() const { return m_c_ * g_.cells; }
   const HydroGeometry& geometry() const { return g_; }
   const ConstitutiveModel& model() const { return model_; }
+  const HydroRegularisation& regularisation() const { return numerics_; }
   double effectiveGravity(double t) const { return g_.gravity + g_.plateAcceleration(t); }
 
   // Where the unknowns sit in the state vector.
@@ -99,6 +125,20 @@ class GranularHydro1D {
   int velocityIndex(int node) const { return vars_ * node + 1; }
   int temperatureIndex(int cell) const { return vars_ * cell + 2; }
   int rotationIndex(int cell) const { return vars_ * cell + 3; }  // rough particles only
+
+  // The temperature unknowns are s = ln(theta / (g sigma)) (see the top of this file).
+  double temperatureUnknown(double theta) const { return std::log(theta / theta_unit_); }
+  double temperatureOf(double s) const { return theta_unit_ * std::exp(s); }
+  // theta and theta_r of a cell in a state U, m^2/s^2, and their rates in dU/dt.
+  double temperature(const double* U, int cell) const {
+    return temperatureOf(U[temperatureIndex(cell)]);
+  }
+  double rotationalTemperature(const double* U, int cell) const {
+    return temperatureOf(U[rotationIndex(cell)]);
+  }
+  double temperatureRate(const double* U, const double* dUdt, int cell) const {
+    return temperature(U, cell) * dUdt[temperatureIndex(cell)];
+  }
 
   // The stress of the wall contact at a gap (m) from the wall, approached at `speed` (m/s,
   // > 0 towards the wall), for a wall cell of density rho and sound speed c: the elastic part
@@ -108,11 +148,10 @@ class GranularHydro1D {
   // What the closures see of a cell (docs/hydro.md, "Admissible states"): Newton's iterates
   // may tangle nodes or overshoot close packing, so the length is floored smoothly at
   // 1e-6 sigma and the density mapped through rho_eff = rho_max - d s((rho_max - rho)/d),
-  // s(x) = (x + sqrt(x^2 + 4))/2, d = 1e-4 of the close-packed density (rho_eff = rho to
-  // 1e-8/(nu_max - nu) below close packing and < rho_max always, so such an iterate meets a
-  // pressure growing as (nu - nu_max)^2/d^4 instead of an undefined state); the temperature
-  // is floored at theta_min = 1e-8 g sigma, which keeps the closures' powers of theta and
-  // their derivatives bounded in a layer that has cooled to rest.
+  // s(x) = (x + sqrt(x^2 + 4))/2, d = packing_width of the close-packed density (rho_eff = rho
+  // to d^2/(rho_max - rho) below close packing and < rho_max always, so a packing past it meets
+  // a pressure growing as (rho - rho_max)/d^2: close packing acts as a constraint, stiffer as
+  // d shrinks); the temperature is theta + temperature_floor.
   struct CellView {
     double rho, theta;
   };
@@ -131,6 +170,24 @@ class GranularHydro1D {
   int jacobian(double t, const double* U, const BandWriter& write) const;
 
   std::string componentName(int k) const;
+
+  // The powers that change the layer's energy in the lab frame (per unit width, W/m) at (t, U):
+  // dE/dt = plate_work - collisional_loss - friction_loss - wall_loss - side_wall_loss, E the
+  // lab-frame kinetic, potential, internal (m theta per particle), rotational (m theta_r / 2)
+  // and wall-contact elastic energy. The artificial viscosity and the walls' dashpots turn
+  // kinetic energy into heat: they move energy inside the layer and are not losses.
+  struct EnergyRates {
+    double plate_work = 0;        // the plate's and the lid's contact force times their velocity
+    double collisional_loss = 0;  // sum of D_c l: the normal inelasticity of pair collisions
+    double friction_loss = 0;     // rough particles: the tangential (friction) part
+    double wall_loss = 0;         // the particles' collisions with the plate and the lid
+    double side_wall_loss = 0;    // the side walls' sink
+  };
+  EnergyRates energyRates(double t, const double* U) const;
+  // E of the state U at time t (J/m), the energy the rates above change.
+  double labEnergy(double t, const double* U) const;
+  // The elastic energy stored in a wall contact at this gap (J/m).
+  double contactEnergy(double gap) const;
 
  private:
   template <class S>
@@ -151,8 +208,11 @@ class GranularHydro1D {
   };
   HydroGeometry g_;
   ConstitutiveModel model_;
+  HydroRegularisation numerics_;
   double m_c_;
   int vars_;
+  double theta_unit_;  // g sigma: the unit of the temperature unknowns
+  bool energy_budget_;
   Regularisation reg_;
   std::unique_ptr<Workspace<double>> values_;
   std::unique_ptr<JetWorkspace<15>> smooth_jets_;  // 5 block colours x 3 unknowns

@@ -28,11 +28,28 @@ struct HydroRunOptions {
   double periodic_tolerance = 0.02;
   CvodeOptions cvode;  // tolerances, method; atol, band, Jacobian filled in if empty
   // atol = 100 atol_scale x (sigma, sqrt(g sigma)) for node heights and velocities and
-  // atol_scale x g sigma for temperatures when cvode.atol is empty: per-variable noise levels.
+  // 1e4 atol_scale for the temperature unknowns ln theta (a relative error of theta) when
+  // cvode.atol is empty: per-variable noise levels.
   double atol_scale = 1e-8;
   bool exact_jacobian = true;  // false: CVODE's difference quotients (for comparison)
-  double initial_theta = 0;    // m^2/s^2 of the settled layer; 0 = 1e-3 g sigma
+  double initial_theta = 0;    // m^2/s^2 of the starting layer; 0 = 1e-3 g sigma
+  // The starting layer: settled on the plate (hydro/SettledLayer.hpp, settledLayer), or spread
+  // evenly over the container as the particle engine places its grains (spreadLayer).
+  enum class Start { Settled, Spread } start = Start::Settled;
   long max_steps_per_cycle = 10000;
+};
+
+// The energy that crossed the layer's budget over one phase interval (J/m), and its closure;
+// filled when the operator carries its energy-budget quadratures (GranularHydro1D,
+// energy_budget), which CVODE integrates with the layer.
+struct PhaseBudget {
+  double plate_work = 0, collisional_loss = 0, friction_loss = 0, wall_loss = 0, side_wall_loss = 0;
+  double energy_change = 0;  // E(end) - E(start) of the interval, lab frame
+  // energy_change - (plate_work - losses): the integration error of the budget.
+  double closure() const {
+    return energy_change -
+           (plate_work - collisional_loss - friction_loss - wall_loss - side_wall_loss);
+  }
 };
 
 // What the layer does over the final window.
@@ -53,6 +70,7 @@ struct HydroPhase {
   double layer_bottom = 0, layer_top = 0;  // the boundary nodes, plate frame, m
   std::vector<double> z, n, u, theta, area_fraction, pressure;
   std::vector<double> rotation;  // theta_r, m^2/s^2 (rough particles; empty otherwise)
+  PhaseBudget budget;            // over the interval ending at this phase (energy budget on)
 };
 
 struct HydroResult {
@@ -89,6 +107,8 @@ class HydroSimulation {
 
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
+  // Advances to t; with the energy budget, what crossed it since the last output.
+  PhaseBudget advanceWithBudget(CvodeIntegrator& cv, double t) const;
   CvodeOptions solverOptions() const;
   int detectPeriod(const std::vector<double>& com) const;
   HydroRegime classify(const std::vector<HydroPhase>& window) const;

@@ -48,6 +48,9 @@ struct PairCorrelation {
   S g2(const S& nu) const;
   template <class S>
   S dg2(const S& nu) const;  // dg2/dnu
+  // Both at once (one exponential for Luding's form).
+  template <class S>
+  void g2WithDerivative(const S& nu, S& g2, S& dg2) const;
   // The area fraction beyond which no state exists (Henderson: 1; Luding: nu_max).
   double limit() const { return form == Form::Henderson ? 1.0 : close_packing; }
 };
@@ -110,6 +113,16 @@ S PairCorrelation::dg2(const S& nu) const {
   S g, dg;
   detail::ludingG2(nu, close_packing, g, dg);
   return dg;
+}
+
+template <class S>
+void PairCorrelation::g2WithDerivative(const S& nu, S& g2, S& dg2) const {
+  if (form == Form::Henderson) {
+    g2 = detail::hendersonG2(nu);
+    dg2 = detail::hendersonDG2(nu);
+    return;
+  }
+  detail::ludingG2(nu, close_packing, g2, dg2);
 }
 
 }  // namespace granwave::hydro

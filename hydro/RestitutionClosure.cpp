@@ -16,6 +16,7 @@ const double kSqrtPi = std::sqrt(std::numbers::pi);
 const double kGamma21_10 = std::tgamma(2.1);                               // 1.04649
 const double kGamma11_5 = std::tgamma(2.2);                                // 1.10180
 const double kGamma8_5OverGamma3_2 = std::tgamma(1.6) / std::tgamma(1.5);  // 1.00822
+const double kFourToTheTenth = std::pow(4.0, 0.1), kTwoToTheTenth = std::pow(2.0, 0.1);
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 void requireInUnitInterval(double value, const char* what) {
@@ -210,6 +211,58 @@ double RestitutionClosure::d2PhiPdTheta2(double theta) const {
     }
   }
   return 0.0;
+}
+
+MaxwellAverages RestitutionClosure::allAverages(double theta) const {
+  MaxwellAverages a;
+  switch (law_) {
+    case Law::Constant:
+      a.phi_w = a.phi_wall = 1.0 - e_ * e_;
+      a.phi_p = 1.0 + e_;
+      return a;
+    case Law::Dry: {
+      if (theta <= 0.0 || kappa_ == 0.0) {
+        a.phi_w = phiW(theta), a.dphi_w = dPhiWdTheta(theta);
+        a.phi_p = phiP(theta), a.dphi_p = dPhiPdTheta(theta), a.d2phi_p = d2PhiPdTheta2(theta);
+        a.phi_wall = phiWall(theta), a.dphi_wall = dPhiWallDTheta(theta);
+        return a;
+      }
+      const double s = std::pow(theta, 0.1);                        // theta^(1/10)
+      const auto loss = [&](double p, double& phi, double& dphi) {  // p = (w theta)^(1/10)
+        phi = 2.0 * kappa_ * kGamma21_10 * p - kappa_ * kappa_ * kGamma11_5 * p * p;
+        dphi =
+            (0.2 * kappa_ * kGamma21_10 * p - 0.2 * kappa_ * kappa_ * kGamma11_5 * p * p) / theta;
+      };
+      loss(kFourToTheTenth * s, a.phi_w, a.dphi_w);
+      loss(kTwoToTheTenth * s, a.phi_wall, a.dphi_wall);
+      const double c =
+          kappa_ * kGamma8_5OverGamma3_2 * kFourToTheTenth * s;  // kappa R (4 theta)^(1/10)
+      a.phi_p = 2.0 - c;
+      a.dphi_p = -0.1 * c / theta;
+      a.d2phi_p = 0.09 * c / (theta * theta);
+      return a;
+    }
+    case Law::Wet: {
+      if (theta <= 0.0) {
+        a.phi_w = a.phi_wall = 1.0;
+        a.phi_p = 1.0;
+        return a;
+      }
+      const double y4 = v_c_ / (2.0 * std::sqrt(theta)), y2 = std::numbers::sqrt2 * y4;
+      const double e4 = std::exp(-y4 * y4), erfc4 = std::erfc(y4);
+      const double e2 = std::exp(-y2 * y2), erfc2 = std::erfc(y2);
+      const double ee = e_ * e_;
+      a.phi_w = 1.0 - ee * (e4 - kSqrtPi * y4 * erfc4);
+      a.dphi_w = -ee * kSqrtPi * erfc4 * y4 / (2.0 * theta);
+      a.phi_wall = 1.0 - ee * (e2 - kSqrtPi * y2 * erfc2);
+      a.dphi_wall = -ee * kSqrtPi * erfc2 * y2 / (2.0 * theta);
+      a.phi_p = 1.0 + e_ * erfc4;
+      a.dphi_p = e_ * y4 * e4 / (kSqrtPi * theta);
+      a.d2phi_p = -e_ * y4 * e4 * (1.5 - y4 * y4) / (kSqrtPi * theta * theta);
+      return a;
+    }
+  }
+  return a;
 }
 
 double RestitutionClosure::effectiveRestitution(double theta) const {

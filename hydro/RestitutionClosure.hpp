@@ -56,6 +56,23 @@ struct RestitutionAverages {
   double effectiveRestitution() const;
 };
 
+// Every average the discrete operator needs at one temperature, with the theta-derivatives
+// its exact Jacobian needs, from one evaluation of the closed forms: the dry law's powers are
+// all (w theta)^(1/10) = w^(1/10) theta^(1/10) and its square, so one pow serves the six of
+// them; the wet law needs erfc and exp at the pair and at the wall argument once each.
+struct MaxwellAverages {
+  double phi_w = 0, dphi_w = 0;        // <1 - e^2>, pairs, and d/dtheta
+  double phi_p = 2, dphi_p = 0;        // <1 + e>_P, pairs, and d/dtheta
+  double d2phi_p = 0;                  // d^2 Phi_P/dtheta^2
+  double phi_wall = 0, dphi_wall = 0;  // <1 - e^2> at a wall, and d/dtheta
+};
+
+// The same on a differentiable scalar (hydro/Scalar.hpp): the derivative of dphi_p is d2phi_p.
+template <class S>
+struct MaxwellAveragesOf {
+  S phi_w, phi_p, dphi_p, phi_wall;
+};
+
 class RestitutionClosure {
  public:
   enum class Law { Constant, Dry, Wet };
@@ -105,6 +122,17 @@ class RestitutionClosure {
   S dPhiPdTheta(const S& theta) const {
     return chain(theta, dPhiPdTheta(value(theta)), d2PhiPdTheta2(value(theta)));
   }
+
+  // All of the above at once (MaxwellAverages); equal to the single functions to round-off.
+  MaxwellAverages allAverages(double theta) const;
+  template <class S>
+  MaxwellAveragesOf<S> averagesOf(const S& theta) const {
+    const MaxwellAverages a = allAverages(value(theta));
+    return {chain(theta, a.phi_w, a.dphi_w), chain(theta, a.phi_p, a.dphi_p),
+            chain(theta, a.dphi_p, a.d2phi_p), chain(theta, a.phi_wall, a.dphi_wall)};
+  }
+
+  bool operator==(const RestitutionClosure&) const = default;
 
   Law law() const { return law_; }
   double restitution() const { return e_; }  // e, e_inf (wet), 1 (dry: e(u -> 0))

@@ -34,15 +34,15 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
   const double weight = N * m_c * g.gravity;
   const double gap =
       solveIncreasing([&](double z) { return -pde.contactStress(z, 0.0, 0.0, 0.0); }, -weight,
-                      1e-9 * m.sigma, GranularHydro1D::kContactRange * m.sigma);
+                      1e-9 * m.sigma, pde.regularisation().wall_contact_range * m.sigma);
   double z = gap;
   for (int i = 0; i < N; ++i) {
     const double stress = (N - i - 0.5) * m_c * g.gravity;
     const double rho_eff =
         solveIncreasing(pressure, stress, 1e-12 * rho_max, rho_max * (1 - 1e-15));
     U[pde.heightIndex(i)] = z;
-    U[pde.temperatureIndex(i)] = theta;
-    if (pde.rough()) U[pde.rotationIndex(i)] = theta;  // equipartition at rest
+    U[pde.temperatureIndex(i)] = pde.temperatureUnknown(theta);
+    if (pde.rough()) U[pde.rotationIndex(i)] = pde.temperatureUnknown(theta);  // equipartition
     z += pde.spacingFor(rho_eff);
   }
   U[pde.heightIndex(N)] = z;
@@ -50,6 +50,26 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
     throw std::invalid_argument("the settled layer (" + std::to_string(z) +
                                 " m) does not fit under the lid (" + std::to_string(g.height) +
                                 " m)");
+  return U;
+}
+
+std::vector<double> spreadLayer(const GranularHydro1D& pde, double theta) {
+  const HydroGeometry& g = pde.geometry();
+  const double sigma = pde.model().sigma;
+  // Out of reach of both wall contacts, so the layer starts free.
+  const double gap = 2 * pde.regularisation().wall_contact_range * sigma;
+  const double spacing = (g.height - 2 * gap) / g.cells;
+  if (pde.cellMass() / spacing >=
+      pde.model().packingLimit() * pde.model().mass / pde.model().diskArea())
+    throw std::invalid_argument(
+        "the layer spread over the container would be packed past close packing");
+  std::vector<double> U(pde.size(), 0.0);
+  for (int j = 0; j <= g.cells; ++j) {
+    U[pde.heightIndex(j)] = gap + j * spacing;
+    if (j == g.cells) break;
+    U[pde.temperatureIndex(j)] = pde.temperatureUnknown(theta);
+    if (pde.rough()) U[pde.rotationIndex(j)] = pde.temperatureUnknown(theta);
+  }
   return U;
 }
 

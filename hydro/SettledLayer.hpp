@@ -15,4 +15,10 @@ namespace granwave::hydro {
 // theta in m^2/s^2; returns the state vector of GranularHydro1D.
 std::vector<double> settledLayer(const GranularHydro1D& pde, double theta);
 
+// The grains spread evenly over the container at rest, as the particle engine places them
+// (initial.placement = "random": uniform in height from the plate to the lid): the cells of
+// equal mass evenly spaced between the plate and the lid, at rest, at temperature theta. The
+// layer then falls onto the plate and its landing shock heats it, as the particles' does.
+std::vector<double> spreadLayer(const GranularHydro1D& pde, double theta);
+
 }  // namespace granwave::hydro

@@ -89,6 +89,8 @@ struct RunSpec {
   double gravity = 9.81;  // m/s^2, magnitude (points along -z)
 };
 
+enum class HydroStart { Settled, Spread };
+
 struct HydroSpec {
   int cells = 100;     // Lagrangian cells of equal mass
   double rtol = 1e-4;  // CVODE relative tolerance
@@ -97,8 +99,20 @@ struct HydroSpec {
   HydroTransport transport = HydroTransport::JenkinsRichman;
   bool side_walls = false;  // side-wall dissipation as a volumetric sink (x not periodic)
   HydroPairCorrelation pair_correlation = HydroPairCorrelation::Luding;
-  double contact_pressure = 1.0;  // scale of the contact pressure in rho_cp g sigma (0 = none)
+  double contact_pressure =
+      0.0;  // scale of an elastic contact pressure in rho_cp g sigma (0 = none)
   HydroParticles particles = HydroParticles::Smooth;  // rough: rotation as a field
+  // Where the run starts: the layer settled on the plate, or spread evenly over the container
+  // as the particle engine places its grains; at this granular temperature, in T0 = m v0^2 / 2.
+  HydroStart start = HydroStart::Spread;
+  double initial_temperature = 1e-4;
+  // The numerical parameters of the discrete operator (hydro/GranularHydro1D.hpp,
+  // HydroRegularisation); docs/hydro.md shows the answers do not depend on them.
+  double artificial_viscosity = 0.25;    // c2 of q = rho c2 du^2
+  double wall_contact_range = 0.05;      // sigma
+  double wall_contact_stiffness = 0.01;  // sigma
+  double packing_width = 1e-4;           // of the close-packed density
+  double temperature_floor = 1e-30;      // g sigma
 };
 
 struct Scene {

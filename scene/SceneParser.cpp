@@ -109,6 +109,11 @@ void readHydroParticles(Scene& s, const Entry& e) {
   s.hydro.particles = e.choice<P>({{"smooth", P::Smooth}, {"rough", P::Rough}});
 }
 
+void readHydroStart(Scene& s, const Entry& e) {
+  using St = HydroStart;
+  s.hydro.start = e.choice<St>({{"settled", St::Settled}, {"spread", St::Spread}});
+}
+
 void readSeed(Scene& s, const Entry& e) { s.run.seed = e.integer<std::int64_t>(0); }
 
 // Readers of plain fields, given as (section member, field member) pointers.
@@ -186,6 +191,13 @@ const Field kFields[] = {
     {"hydro", "pair_correlation", readHydroPairCorrelation},
     {"hydro", "contact_pressure", number<kH, &HydroSpec::contact_pressure>},
     {"hydro", "particles", readHydroParticles},
+    {"hydro", "start", readHydroStart},
+    {"hydro", "initial_temperature", number<kH, &HydroSpec::initial_temperature>},
+    {"hydro", "artificial_viscosity", number<kH, &HydroSpec::artificial_viscosity>},
+    {"hydro", "wall_contact_range", number<kH, &HydroSpec::wall_contact_range>},
+    {"hydro", "wall_contact_stiffness", number<kH, &HydroSpec::wall_contact_stiffness>},
+    {"hydro", "packing_width", number<kH, &HydroSpec::packing_width>},
+    {"hydro", "temperature_floor", number<kH, &HydroSpec::temperature_floor>},
 };
 
 const Field* findField(std::string_view section, std::string_view name) {

@@ -132,6 +132,14 @@ void Checker::singleKeys() const {
   within("hydro.rtol", s_.hydro.rtol, '[', 1e-12, 0.1, ']', "relative tolerance");
   within("hydro.atol", s_.hydro.atol, '[', 1e-16, 1e-2, ']', "absolute tolerance");
   within("hydro.contact_pressure", s_.hydro.contact_pressure, '[', 0.0, 1e6, ']');
+  within("hydro.initial_temperature", s_.hydro.initial_temperature, '(', 0.0, 100.0, ']', "T0");
+  within("hydro.artificial_viscosity", s_.hydro.artificial_viscosity, '[', 0.0, 10.0, ']');
+  within("hydro.wall_contact_range", s_.hydro.wall_contact_range, '(', 0.0, 0.5, ']', "diameters");
+  within("hydro.wall_contact_stiffness", s_.hydro.wall_contact_stiffness, '(', 0.0,
+         s_.hydro.wall_contact_range, ')', "diameters, below hydro.wall_contact_range");
+  within("hydro.packing_width", s_.hydro.packing_width, '[', 1e-8, 1e-2, ']',
+         "of the close-packed density");
+  within("hydro.temperature_floor", s_.hydro.temperature_floor, '[', 1e-60, 1e-10, ']', "g sigma");
 }
 
 // The initial temperature as a thermal speed sqrt(2 T / m): hard spheres at more than 1 km/s

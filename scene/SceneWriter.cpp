@@ -165,6 +165,13 @@ std::string sceneToToml(const Scene& s) {
       quoted(s.hydro.pair_correlation == HydroPairCorrelation::Henderson ? "henderson" : "luding"));
   w.key("contact_pressure", s.hydro.contact_pressure);
   w.key("particles", quoted(s.hydro.particles == HydroParticles::Rough ? "rough" : "smooth"));
+  w.key("start", quoted(s.hydro.start == HydroStart::Spread ? "spread" : "settled"));
+  w.key("initial_temperature", s.hydro.initial_temperature);
+  w.key("artificial_viscosity", s.hydro.artificial_viscosity);
+  w.key("wall_contact_range", s.hydro.wall_contact_range);
+  w.key("wall_contact_stiffness", s.hydro.wall_contact_stiffness);
+  w.key("packing_width", s.hydro.packing_width);
+  w.key("temperature_floor", s.hydro.temperature_floor);
   return w.take();
 }
 

@@ -57,8 +57,21 @@ hydro::HydroGeometry hydroGeometry(const Scene& scene, const SceneDerived& dv) {
   return geom;
 }
 
-hydro::HydroRunOptions hydroRunOptions(const Scene& scene) {
+hydro::HydroRegularisation hydroRegularisation(const Scene& scene) {
+  hydro::HydroRegularisation r;
+  r.quadratic_viscosity = scene.hydro.artificial_viscosity;
+  r.wall_contact_range = scene.hydro.wall_contact_range;
+  r.wall_contact_stiffness = scene.hydro.wall_contact_stiffness;
+  r.packing_width = scene.hydro.packing_width;
+  r.temperature_floor = scene.hydro.temperature_floor;
+  return r;
+}
+
+hydro::HydroRunOptions hydroRunOptions(const Scene& scene, const SceneDerived& dv) {
   hydro::HydroRunOptions ro;
+  ro.initial_theta = scene.hydro.initial_temperature * dv.T0 / dv.mass;  // T0 = m theta0
+  ro.start = scene.hydro.start == HydroStart::Spread ? hydro::HydroRunOptions::Start::Spread
+                                                     : hydro::HydroRunOptions::Start::Settled;
   ro.samples_per_cycle = scene.run.phases_per_cycle;
   ro.max_cycles =
       std::max(8, static_cast<int>(std::floor(scene.run.duration * scene.drive.frequency)));

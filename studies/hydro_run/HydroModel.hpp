@@ -25,7 +25,10 @@ hydro::ConstitutiveModel constitutiveModel(const Scene& scene, const SceneDerive
 // Cells, container height, gravity, drive; the drive ramps up over two cycles from the settled
 // layer.
 hydro::HydroGeometry hydroGeometry(const Scene& scene, const SceneDerived& derived);
-// M phases per cycle, at most run.duration x f cycles (at least 8), the scene's tolerances.
-hydro::HydroRunOptions hydroRunOptions(const Scene& scene);
+// The numerical parameters of the discrete operator (docs/hydro.md, "Sensitivity").
+hydro::HydroRegularisation hydroRegularisation(const Scene& scene);
+// M phases per cycle, at most run.duration x f cycles (at least 8), the scene's tolerances, the
+// start (hydro.start) and its temperature (hydro.initial_temperature, in T0).
+hydro::HydroRunOptions hydroRunOptions(const Scene& scene, const SceneDerived& derived);
 
 }  // namespace granwave

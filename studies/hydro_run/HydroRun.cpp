@@ -57,8 +57,9 @@ HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
         scene_name + ": granwave hydro needs bottom and lid (container.periodic_z = false)");
   const SceneDerived dv = derive(scene);
   const hydro::GranularHydro1D pde(hydroGeometry(scene, dv), constitutiveModel(scene, dv),
-                                   scene.particles.count * dv.mass / scene.container.width);
-  const hydro::HydroRunOptions ro = hydroRunOptions(scene);
+                                   scene.particles.count * dv.mass / scene.container.width,
+                                   hydroRegularisation(scene));
+  const hydro::HydroRunOptions ro = hydroRunOptions(scene, dv);
   hydro::HydroSimulation sim(pde, ro);
   if (progress)
     fmt::print(progress, "  integrating up to {} cycles ({} cells)...\n", ro.max_cycles,

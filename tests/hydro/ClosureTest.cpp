@@ -246,3 +246,31 @@ TEST(RestitutionClosure, AveragesCarryTheEffectiveRestitution) {
   EXPECT_DOUBLE_EQ(a.phi_p, kDry.phiP(0.1));
   EXPECT_DOUBLE_EQ(a.effectiveRestitution(), kDry.effectiveRestitution(0.1));
 }
+
+// The operator takes every average from one evaluation (allAverages: one pow for the dry law,
+// erfc and exp once per argument for the wet one); it must equal the single closed forms
+// (above, checked against quadrature) to round-off, at every temperature and at theta <= 0.
+TEST(RestitutionClosure, AllAveragesAtOnceEqualTheSingleClosedForms) {
+  std::vector<double> thetas = thetaGrid();
+  thetas.push_back(0.0);
+  for (const RestitutionClosure& c :
+       {kConstant, kDry, kWet, RestitutionClosure::dry(0.0), RestitutionClosure::wet(0.8, 0.0)}) {
+    for (double theta : thetas) {
+      const granwave::hydro::MaxwellAverages a = c.allAverages(theta);
+      const auto same = [](double got, double want) {
+        if (std::isinf(want)) return got == want;
+        return std::abs(got - want) <= 1e-14 * std::max(1.0, std::abs(want));
+      };
+      EXPECT_TRUE(same(a.phi_w, c.phiW(theta))) << theta;
+      EXPECT_TRUE(same(a.phi_p, c.phiP(theta))) << theta;
+      EXPECT_TRUE(same(a.phi_wall, c.phiWall(theta))) << theta;
+      // Derivatives in units of the value: theta dPhi/dtheta (at theta = 0 the limits, which
+      // are infinite for the dry law).
+      const double t = theta > 0 ? theta : 1.0;
+      EXPECT_TRUE(same(a.dphi_w * t, c.dPhiWdTheta(theta) * t)) << theta;
+      EXPECT_TRUE(same(a.dphi_p * t, c.dPhiPdTheta(theta) * t)) << theta;
+      EXPECT_TRUE(same(a.d2phi_p * t * t, c.d2PhiPdTheta2(theta) * t * t)) << theta;
+      EXPECT_TRUE(same(a.dphi_wall * t, c.dPhiWallDTheta(theta) * t)) << theta;
+    }
+  }
+}

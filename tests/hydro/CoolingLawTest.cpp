@@ -60,7 +60,7 @@ Cooled pdeTheta(const ConstitutiveModel& m, double theta0, double t) {
   CvodeIntegrator cv = test::integrator(*c.pde, c.U, 1e-9);
   cv.advanceTo(t);
   const double nu = m.areaFraction(c.pde->cellView(cv.state().data(), 10).rho);
-  return {cv.state()[c.pde->temperatureIndex(10)], nu0, nu};
+  return {c.pde->temperature(cv.state().data(), 10), nu0, nu};
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
 // Shared by the hydro tests: the paper's glass beads, a constitutive model built from a pair
-// and a wall restitution law (Knudsen limiter at one diameter and the contact pressure, as
-// `granwave hydro`), and uniform or settled states of the Lagrangian operator.
+// and a wall restitution law (Knudsen limiter at one diameter, no elastic contact pressure, as
+// `granwave hydro` by default), and uniform or settled states of the Lagrangian operator.
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -25,7 +25,6 @@ inline ConstitutiveModel beadModel(RestitutionClosure pairs, RestitutionClosure 
   m.restitution = pairs;
   m.wall_restitution = walls;
   m.knudsen_length = kD;
-  m.contact.scale = kRhoCp * 9.81 * kD;
   return m;
 }
 
@@ -53,8 +52,9 @@ inline Column uniformGas(const ConstitutiveModel& m, int cells, double height, d
     const double length = (height - 2 * gap) / cells;
     for (int j = 0; j <= cells; ++j) {
       c.U[c.pde->heightIndex(j)] = gap + j * length;
-      if (j < cells) c.U[c.pde->temperatureIndex(j)] = theta;
-      if (j < cells && c.pde->rough()) c.U[c.pde->rotationIndex(j)] = theta;
+      if (j < cells) c.U[c.pde->temperatureIndex(j)] = c.pde->temperatureUnknown(theta);
+      if (j < cells && c.pde->rough())
+        c.U[c.pde->rotationIndex(j)] = c.pde->temperatureUnknown(theta);
     }
   };
   double gap = 0;
@@ -62,7 +62,7 @@ inline Column uniformGas(const ConstitutiveModel& m, int cells, double height, d
     place(gap);
     const GranularHydro1D::CellView v = pde.cellView(c.U.data(), 0);  // as the closures see it
     const double p = m.pressure(v.rho, v.theta);
-    double lo = 0, hi = GranularHydro1D::kContactRange * kD;
+    double lo = 0, hi = pde.regularisation().wall_contact_range * kD;
     for (int b = 0; b < 200; ++b) {
       const double mid = 0.5 * (lo + hi);
       (pde.contactStress(mid, 0, 0, 0) > p ? lo : hi) = mid;
@@ -81,8 +81,8 @@ inline CvodeIntegrator integrator(const GranularHydro1D& pde, const std::vector<
   for (int j = 0; j <= pde.cells(); ++j) {
     o.atol[pde.heightIndex(j)] = 1e-12;
     o.atol[pde.velocityIndex(j)] = 1e-12;
-    if (j < pde.cells()) o.atol[pde.temperatureIndex(j)] = 1e-14;
-    if (j < pde.cells() && pde.rough()) o.atol[pde.rotationIndex(j)] = 1e-14;
+    if (j < pde.cells()) o.atol[pde.temperatureIndex(j)] = 1e-10;  // ln theta: relative
+    if (j < pde.cells() && pde.rough()) o.atol[pde.rotationIndex(j)] = 1e-10;
   }
   o.band_upper = o.band_lower = pde.halfBand();
   o.max_steps = 200000;

@@ -37,7 +37,7 @@ void expectJacobianMatchesFiniteDifferences(TransportSet transport) {
     U[pde.velocityIndex(j)] = 0.5 * (U01(rng) - 0.5);
     if (j == N) break;
     const double nu = j < 6 ? 0.6 + 0.25 * U01(rng) : 0.02 + 0.5 * U01(rng);
-    U[pde.temperatureIndex(j)] = 0.05 * (0.01 + U01(rng));
+    U[pde.temperatureIndex(j)] = pde.temperatureUnknown(0.05 * (0.01 + U01(rng)));
     z += pde.cellMass() / test::densityOf(nu);
   }
   std::vector<double> J(static_cast<std::size_t>(n) * n, 0.0);
