@@ -98,6 +98,8 @@ struct HydroSpec {
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;
   HydroTransport transport = HydroTransport::JenkinsRichman;
   bool side_walls = false;  // side-wall dissipation as a volumetric sink (x not periodic)
+  // Integrate the layer's energy budget with it (docs/hydro.md, "Energy budget").
+  bool energy_budget = false;
   HydroPairCorrelation pair_correlation = HydroPairCorrelation::Luding;
   double contact_pressure =
       0.0;  // scale of an elastic contact pressure in rho_cp g sigma (0 = none)

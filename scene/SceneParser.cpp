@@ -188,6 +188,7 @@ const Field kFields[] = {
     {"hydro", "restitution_model", readHydroModel},
     {"hydro", "transport", readHydroTransport},
     {"hydro", "side_walls", boolean<kH, &HydroSpec::side_walls>},
+    {"hydro", "energy_budget", boolean<kH, &HydroSpec::energy_budget>},
     {"hydro", "pair_correlation", readHydroPairCorrelation},
     {"hydro", "contact_pressure", number<kH, &HydroSpec::contact_pressure>},
     {"hydro", "particles", readHydroParticles},

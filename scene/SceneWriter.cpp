@@ -158,6 +158,7 @@ std::string sceneToToml(const Scene& s) {
         quoted(s.hydro.restitution_model == HydroRestitutionModel::Constant ? "constant"
                                                                             : "velocity"));
   w.key("side_walls", s.hydro.side_walls);
+  w.key("energy_budget", s.hydro.energy_budget);
   w.key("transport", quoted(s.hydro.transport == HydroTransport::GarzoDufty ? "garzo-dufty"
                                                                             : "jenkins-richman"));
   w.key(

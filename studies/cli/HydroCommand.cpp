@@ -15,6 +15,24 @@ namespace granwave {
 
 namespace {
 
+// Per drive cycle over the window, in mJ, with each loss's share of the dissipation.
+void printBudget(const HydroRunContent& c) {
+  if (c.budget.empty()) return;
+  const auto perCycle = [&](const std::vector<double>& v) {
+    double sum = 0;
+    for (double x : v) sum += x;
+    return 1e3 * sum / c.windowCycles();
+  };
+  const double work = perCycle(c.budget.plate_work), pair = perCycle(c.budget.collisional_loss);
+  const double friction = perCycle(c.budget.friction_loss), wall = perCycle(c.budget.wall_loss);
+  const double lost = pair + friction + wall, change = perCycle(c.budget.energy_change);
+  fmt::print(
+      "energy          per cycle: plate work {:.3f} mJ; lost {:.3f} mJ: pair collisions {:.0f} %, "
+      "friction and rotation {:.0f} %, walls {:.0f} %; closure {:.1e} mJ\n",
+      work, lost, 100 * pair / lost, 100 * friction / lost, 100 * wall / lost,
+      change - (work - lost));
+}
+
 void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunContent& c,
                   const std::string& out) {
   fmt::print("scene           {}\n", opt.scene_path);
@@ -46,6 +64,7 @@ void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunCon
         static_cast<double>(e.last_phase) / samples_per_cycle, e.speed, e.fit_error,
         e.peak_temperature);
   }
+  printBudget(c);
   fmt::print("output          {}\n", out);
 }
 

@@ -1,5 +1,6 @@
 #include "studies/cli/StudyKinds.hpp"
 
+#include "studies/continuum_sensitivity/ContinuumSensitivityStudy.hpp"
 #include "studies/effective_restitution/EffectiveRestitutionStudy.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
 #include "studies/readings/ReadingsStudy.hpp"
@@ -19,9 +20,10 @@ std::unique_ptr<Study> makeStudy(StudyFile& file) {
   if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
   if (kind == "readings") return makeReadingsStudy(file);
   if (kind == "surface-waves") return makeSurfaceWavesStudy(file);
+  if (kind == "continuum-sensitivity") return makeContinuumSensitivityStudy(file);
   file.fail("study", "kind",
             "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
-            "momentum-transfer, stability, readings, surface-waves");
+            "momentum-transfer, stability, readings, surface-waves, continuum-sensitivity");
 }
 
 }  // namespace granwave

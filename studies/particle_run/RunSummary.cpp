@@ -109,8 +109,9 @@ std::string formatRunSummary(const RunSummaryInput& in, bool include_timing) {
                    o.collisions.pair, o.collisions.wall, o.collisions.tc_elastic,
                    o.collisions.rests);
   r += fmt::format(
-      "energy          dissipated {:.4g} J, work by walls {:.4g} J, balance error {:.2g} J\n",
-      o.dissipated_energy, o.wall_work, in.energy_balance_error);
+      "energy          dissipated {:.4g} J ({:.4g} J at the walls), work by walls {:.4g} J, "
+      "balance error {:.2g} J\n",
+      o.dissipated_energy, o.wall_dissipated_energy, o.wall_work, in.energy_balance_error);
   PeriodResult p;
   int discarded = 0;
   if (summarisePeriod(in, p, discarded)) {

@@ -25,6 +25,17 @@ struct HydroRunContent {
   bool periodic = false;
   std::string regime;  // hydro::regimeName: at rest, solid or fluidised
   double cpu_seconds = 0;
+  // The plate-frame centre of mass at every sampled phase of every cycle, ramp included (m),
+  // phases_per_cycle per cycle: how the run settled, not only its final window. Empty in files
+  // written before it was stored.
+  std::vector<double> com_history;
+  std::int64_t phases_per_cycle = 0;
+  // The energy that crossed the layer over each phase interval of the window (J, the box's
+  // width), when the scene asked for it (hydro.energy_budget); empty otherwise.
+  struct EnergyBudget {
+    std::vector<double> plate_work, collisional_loss, friction_loss, wall_loss, energy_change;
+    bool empty() const { return plate_work.empty(); }
+  } budget;
   std::string scene_toml;  // the fully resolved scene
   // Drive cycles in the window: the period, or 2 when none was found (HydroSimulation).
   int windowCycles() const { return periodic ? static_cast<int>(period) : 2; }

@@ -48,6 +48,7 @@ inline void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);
   EXPECT_EQ(a.hydro.transport, b.hydro.transport);
   EXPECT_EQ(a.hydro.side_walls, b.hydro.side_walls);
+  EXPECT_EQ(a.hydro.energy_budget, b.hydro.energy_budget);
   EXPECT_EQ(a.hydro.pair_correlation, b.hydro.pair_correlation);
   EXPECT_EQ(a.hydro.contact_pressure, b.hydro.contact_pressure);
   EXPECT_EQ(a.hydro.particles, b.hydro.particles);

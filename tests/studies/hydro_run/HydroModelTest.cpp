@@ -60,9 +60,34 @@ TEST(HydroModel, RunLastsTheScenesDurationAfterATwoCycleRamp) {
   const SceneDerived dv = derive(s);
   EXPECT_DOUBLE_EQ(hydroGeometry(s, dv).ramp_time, 2 / s.drive.frequency);
   EXPECT_EQ(hydroGeometry(s, dv).cells, s.hydro.cells);
-  EXPECT_EQ(hydroRunOptions(s).max_cycles, static_cast<int>(30 * s.drive.frequency));
-  EXPECT_EQ(hydroRunOptions(paper("dry", {"run.duration=0.2"})).max_cycles, 8);
-  EXPECT_EQ(hydroRunOptions(s).samples_per_cycle, s.run.phases_per_cycle);
+  EXPECT_EQ(hydroRunOptions(s, dv).max_cycles, static_cast<int>(30 * s.drive.frequency));
+  const Scene brief = paper("dry", {"run.duration=0.2"});
+  EXPECT_EQ(hydroRunOptions(brief, derive(brief)).max_cycles, 8);
+  EXPECT_EQ(hydroRunOptions(s, dv).samples_per_cycle, s.run.phases_per_cycle);
+}
+
+TEST(HydroModel, StartsAsTheSceneSaysAtItsTemperatureInUnitsOfT0) {
+  const Scene spread = paper("wet", {"hydro.initial_temperature=0.01"});
+  const SceneDerived dv = derive(spread);
+  const hydro::HydroRunOptions ro = hydroRunOptions(spread, dv);
+  EXPECT_EQ(ro.start, hydro::HydroRunOptions::Start::Spread);
+  // T0 = m v0^2 / 2 = m theta0: theta = 0.01 v0^2 / 2.
+  EXPECT_NEAR(ro.initial_theta, 0.01 * dv.v0 * dv.v0 / 2, 1e-15);
+  const Scene settled = paper("wet", {"hydro.start=settled"});
+  EXPECT_EQ(hydroRunOptions(settled, derive(settled)).start,
+            hydro::HydroRunOptions::Start::Settled);
+}
+
+TEST(HydroModel, RegularisationKeysReachTheOperator) {
+  const Scene s = paper("dry", {"hydro.artificial_viscosity=0.5", "hydro.wall_contact_range=0.1",
+                                "hydro.wall_contact_stiffness=0.02", "hydro.packing_width=2e-4",
+                                "hydro.temperature_floor=1e-20"});
+  const hydro::HydroRegularisation r = hydroRegularisation(s);
+  EXPECT_EQ(r.quadratic_viscosity, 0.5);
+  EXPECT_EQ(r.wall_contact_range, 0.1);
+  EXPECT_EQ(r.wall_contact_stiffness, 0.02);
+  EXPECT_EQ(r.packing_width, 2e-4);
+  EXPECT_EQ(r.temperature_floor, 1e-20);
 }
 
 TEST(HydroModel, EffectiveRestitutionOfAConstantLawIsItsE) {

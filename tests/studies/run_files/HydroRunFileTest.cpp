@@ -187,4 +187,28 @@ TEST(HydroRunFile, AFileWithTheEarlierNamesReadsToTheSameValues) {
   EXPECT_EQ(r.regime, "fluidised");
 }
 
+TEST(HydroRunFile, KeepsTheCentreOfMassHistoryAndTheEnergyBudgetWhenTheRunHasThem) {
+  testing::ScratchDir dir;
+  HydroRunContent c = content();
+  writeHydroRunFile(dir.file("plain.h5"), c);
+  const HydroRunContent plain = readHydroRunFile(dir.file("plain.h5"));
+  EXPECT_TRUE(plain.com_history.empty());
+  EXPECT_TRUE(plain.budget.empty());
+  c.com_history = {1e-3, 2e-3, 3e-3, 2e-3, 1e-3, 2e-3};
+  c.phases_per_cycle = 2;
+  c.budget.plate_work = {1e-4, 2e-4, 3e-4, 4e-4};
+  c.budget.collisional_loss = {5e-5, 1e-4, 1e-4, 2e-4};
+  c.budget.friction_loss = {0, 0, 0, 0};
+  c.budget.wall_loss = {1e-5, 1e-5, 2e-5, 2e-5};
+  c.budget.energy_change = {4e-5, 9e-5, 1.8e-4, 1.8e-4};
+  writeHydroRunFile(dir.file("full.h5"), c);
+  const HydroRunContent r = readHydroRunFile(dir.file("full.h5"));
+  EXPECT_TRUE(sameBits(r.com_history, c.com_history));
+  EXPECT_EQ(r.phases_per_cycle, 2);
+  EXPECT_TRUE(sameBits(r.budget.plate_work, c.budget.plate_work));
+  EXPECT_TRUE(sameBits(r.budget.collisional_loss, c.budget.collisional_loss));
+  EXPECT_TRUE(sameBits(r.budget.wall_loss, c.budget.wall_loss));
+  EXPECT_TRUE(sameBits(r.budget.energy_change, c.budget.energy_change));
+}
+
 }  // namespace granwave
