@@ -68,12 +68,7 @@ EngineConfig engineConfig(const Scene& scene) {
   c.sleep_alarm = scene.contact.sleep == SleepRule::Off ? 0 : kAutoSleepAlarm;
   c.rest_velocity = scene.contact.rest_velocity;
   c.duration = scene.run.duration;
-  if (dv.driven) {
-    c.record_interval = 1.0 / (scene.drive.frequency * scene.run.phases_per_cycle);
-  } else {
-    c.record_interval =
-        scene.run.record_interval > 0 ? scene.run.record_interval : scene.run.duration / 100.0;
-  }
+  c.record_interval = recordInterval(scene);
   // Collapse: a collision rate per particle far above any physical one. The velocity scale is
   // the largest of plate speed, sqrt(g d) and the thermal speed.
   double v = std::max(dv.v0, std::sqrt(c.gravity * c.diameter));

@@ -1,5 +1,6 @@
 #include "scene/SceneDerived.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -62,6 +63,23 @@ SceneDerived derive(const Scene& s) {
                    ? s.contact.kappa
                    : s.contact.kappa * std::pow(kappaVelocityUnit(ku, g, dia), -0.2);
   return d;
+}
+
+double recordInterval(const Scene& scene) {
+  if (scene.drive.frequency > 0.0)
+    return 1.0 / (scene.drive.frequency * scene.run.phases_per_cycle);
+  return scene.run.record_interval > 0 ? scene.run.record_interval : scene.run.duration / 100.0;
+}
+
+// The engine records at k x interval while that is within eps = 1e-12 max(duration, interval)
+// of the duration (particles/EdSimulation.cpp, run()); the same comparison in doubles here.
+std::uint64_t lastRecordStep(const Scene& scene) {
+  const double interval = recordInterval(scene), end = scene.run.duration;
+  const double eps = 1e-12 * std::max(end, interval);
+  auto k = static_cast<std::uint64_t>(std::max(0.0, std::floor(end / interval)));
+  while (static_cast<double>(k + 1) * interval <= end + eps) ++k;
+  while (k > 0 && static_cast<double>(k) * interval > end + eps) --k;
+  return k;
 }
 
 }  // namespace granwave

@@ -5,6 +5,8 @@
 //   t_c = 2.94 (m/k)^(2/5) v0^(-1/5) with k = 4 E sqrt(d) / (15 (1 - sigma^2)),
 //   q = rho d / (9 eta), v_c = St_c / q,
 //   kappa_SI = kappa u^(-1/5) for the dry law's velocity unit u (1 m/s, sqrt(g d) or 1 cm/s).
+#include <cstdint>
+
 #include "scene/Scene.hpp"
 
 namespace granwave {
@@ -34,5 +36,14 @@ double tcContactDuration(double mass, double hertz_k, double velocity);
 double kappaVelocityUnit(KappaUnits units, double gravity, double diameter);
 
 SceneDerived derive(const Scene& scene);
+
+// The time between two records (s): one phase, 1 / (f M), in a driven scene; else
+// run.record_interval, or duration / 100 when that is 0 (docs/scenes.md, [run]).
+double recordInterval(const Scene& scene);
+
+// The step of a run's last record: records are made at k x recordInterval for k = 0, 1, ...
+// up to the duration (within 1e-12 of it, as the engine decides). A trajectory stride of this
+// value keeps the first and the last frame only.
+std::uint64_t lastRecordStep(const Scene& scene);
 
 }  // namespace granwave

@@ -69,7 +69,8 @@ Table hydroFailureTable(const MethodComparisonConfig& c, const FailureMap& m) {
   return t;
 }
 
-// Two colours for a yes/no outcome, the cases and Gamma values named on the axes.
+// Two colours for a yes/no outcome, the cases and Gamma values named on the axes: vermillion
+// and blue of Okabe and Ito's palette, told apart with any colour vision (not red and green).
 Figure hydroFailureMap(const MethodComparisonConfig& c, const FailureMap& m) {
   Image map;
   map.nx = static_cast<int>(c.fail_gammas.size());
@@ -86,12 +87,12 @@ Figure hydroFailureMap(const MethodComparisonConfig& c, const FailureMap& m) {
   map.y_labels = m.hydro_cases;
   map.label = "CVODE outcome";
   map.category_labels = {"failed", "reached the end"};
-  map.category_colors = {"tab:red", "tab:green"};
+  map.category_colors = {"#D55E00", "#0072B2"};
   Figure fm;
   fm.title = "Hydro stability map";
   fm.caption =
-      "Each cell one hydro run of the table above: green, the solver reached the end; red, "
-      "CVODE failed (the table gives the flag).";
+      "Each cell one hydro run of the table above: blue, the solver reached the end; "
+      "vermillion, CVODE failed (the table gives the flag).";
   fm.xlabel = "Gamma";
   fm.ylabel = "law, grid, tolerance";
   fm.image.push_back(std::move(map));

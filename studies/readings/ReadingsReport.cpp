@@ -81,7 +81,8 @@ Figure verdictMap(const ReadingsConfig& c, const ReadingsResults& r) {
   for (const StatementText& s : kStatementTexts) map.y_labels.push_back(s.paper);
   map.label = "verdict";
   map.category_labels = {"holds", "fails", "undecided", "no data"};
-  map.category_colors = {"tab:green", "tab:red", "tab:olive", "lightgrey"};
+  // Okabe and Ito's blue, vermillion and yellow: told apart with any colour vision.
+  map.category_colors = {"#0072B2", "#D55E00", "#F0E442", "lightgrey"};
   Figure f;
   f.title = "Verdict map";
   f.caption = "The table above as colours: one column per reading, one row per statement.";

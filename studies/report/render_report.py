@@ -234,14 +234,20 @@ def covers_data(fig, ax, legend):
 
 
 def place_legend(fig, ax, outside):
-    """Inside the axes where it hides no data (matplotlib's "best" place), else beside them."""
+    """Inside the axes where it hides no data (matplotlib's "best" place), else beside them,
+    or below them where a colour bar stands beside them."""
     if not outside:
         legend = ax.legend()
         fig.canvas.draw()
         if not covers_data(fig, ax, legend):
             return
         legend.remove()
-    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+    if ax.images:  # the colour bar is on the right: the legend goes under the axis label
+        entries = len(ax.get_legend_handles_labels()[0])
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), borderaxespad=0.0,
+                  ncol=min(entries, 4))
+    else:
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
 
 
 def render_figure(item):

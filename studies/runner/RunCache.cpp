@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <toml++/toml.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <stdexcept>
 
 #include "files/OutputPath.hpp"
+#include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/runner/ChildProcess.hpp"
 
@@ -32,7 +34,16 @@ RunCache::RunCache(std::string directory, std::string build_id)
   std::filesystem::create_directories(directory_);
 }
 
-RunRecord RunCache::record(const RunRequest& request) const {
+RunRecord RunCache::record(const RunRequest& given) const {
+  RunRequest request = given;
+  // A study reads a particle run's observables (every record), its fields and at most its last
+  // frame, never the trajectory between: the run file keeps the first and the last frame only
+  // (the paper's wet scene: 333 MB of trajectory otherwise). The stride is part of the scene
+  // the run is made from, so of its key; `granwave simulate` of the run's scene file with
+  // --set run.trajectory_stride=1 makes the whole trajectory (docs/studies.md).
+  if (request.kind == RunKind::Particles)
+    request.scene.run.trajectory_stride =
+        static_cast<int>(std::max<std::uint64_t>(lastRecordStep(request.scene), 1));
   const char* kind = request.kind == RunKind::Particles ? "particles"
                      : request.kind == RunKind::Hydro   ? "hydro"
                                                         : "lammps";

@@ -17,7 +17,8 @@ class RunCache {
   RunCache(std::string directory, std::string build_id);
 
   const std::string& directory() const { return directory_; }
-  // The record with its stem filled in (and ok/cpu/... if it is done).
+  // The record with its stem filled in (and ok/cpu/... if it is done). A particle run's scene
+  // gets the trajectory stride that keeps its first and last frame only (RunCache.cpp).
   RunRecord record(const RunRequest& request) const;
   // True if the run is done; fills the outcome fields of `record`.
   bool load(RunRecord& record) const;

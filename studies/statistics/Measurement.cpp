@@ -71,7 +71,17 @@ std::string formatCompact(double v) { return fmt::format("{:g}", v); }
 std::string format(const Measurement& m, int digits) {
   if (!m.valid()) return "–";
   if (!std::isfinite(m.error)) return formatNumber(m.value, digits);
-  // At least `digits` decimals, more if needed to show two significant digits of the error.
+  // At least `digits` decimals, more if needed to show two significant digits of the error;
+  // an error below 1e-4 in a power of ten, so that no small number prints as 0.00000.
+  if (m.error > 0 && m.error < 1e-4) {
+    const int exponent =
+        static_cast<int>(std::floor(std::log10(std::max(std::abs(m.value), m.error))));
+    const double scale = std::pow(10.0, exponent);
+    const int decimals =
+        std::max(1, exponent + 1 - static_cast<int>(std::floor(std::log10(m.error))));
+    return fmt::format("({:.{}f} ± {:.{}f})e{}", m.value / scale, decimals, m.error / scale,
+                       decimals, exponent);
+  }
   if (m.error > 0)
     digits = std::clamp(1 - static_cast<int>(std::floor(std::log10(m.error))), digits, 5);
   return fmt::format("{:.{}f} ± {:.{}f}", m.value, digits, m.error, digits);

@@ -126,5 +126,20 @@ TEST(SceneDerived, KappaReadingsGiveTheDryRestitutionAtOneMetrePerSecondOfEachUn
   EXPECT_NEAR(1.0 - derive(s).kappa_si, 0.749, 0.0005);
 }
 
+// Records at k / (f M) in a driven scene, k = 0 ... f M duration (docs/scenes.md, [run]); an
+// undriven scene records every run.record_interval, by default duration / 100.
+TEST(SceneDerived, RecordsEveryPhaseUpToTheDuration) {
+  Scene s;  // 15 s at 10 Hz, 100 phases per cycle
+  EXPECT_DOUBLE_EQ(recordInterval(s), 1e-3);
+  EXPECT_EQ(lastRecordStep(s), 15000u);
+  s.run.duration = 0.2037;  // not a whole number of phases: the last record is at 0.203 s
+  EXPECT_EQ(lastRecordStep(s), 203u);
+  s.drive.frequency = 0;
+  EXPECT_DOUBLE_EQ(recordInterval(s), 0.2037 / 100);
+  EXPECT_EQ(lastRecordStep(s), 100u);
+  s.run.record_interval = 0.05;
+  EXPECT_EQ(lastRecordStep(s), 4u);
+}
+
 }  // namespace
 }  // namespace granwave

@@ -9,6 +9,8 @@
 
 #include "files/OutputPath.hpp"
 #include "particles/H5mdReader.hpp"
+#include "scene/SceneDerived.hpp"
+#include "scene/SceneParser.hpp"
 #include "studies/particle_run/ParticleRun.hpp"
 #include "studies/runner/ExitCode.hpp"
 #include "tests/h5/ScratchDir.hpp"
@@ -41,6 +43,31 @@ TEST(ParticleRun, ShortRunEndsInACompletedRunFileWithItsProvenance) {
   EXPECT_EQ(run.provenance().program_version, "test-version");
   EXPECT_EQ(run.provenance().command_line, "granwave simulate (test)");
   EXPECT_NEAR(run.observable("center_of_mass_height").time.back(), 0.2, 1e-9);
+}
+
+// A study keeps only the first and the last frame of a run it does not read the trajectory of
+// (studies/runner/RunCache.cpp): a stride of lastRecordStep must put the last record into the
+// trajectory, whatever the duration (a whole number of records or not, driven or not).
+TEST(ParticleRun, StrideOfTheLastRecordStepKeepsTheFirstAndTheLastRecordAsFrames) {
+  for (const char* duration : {"0.2", "0.2037"}) {
+    for (const char* frequency : {"10", "0"}) {
+      testing::ScratchDir dir;
+      ParticleRunOptions opt;
+      opt.scene_path = kScene;
+      opt.overrides = {std::string("run.duration=") + duration,
+                       std::string("drive.frequency=") + frequency};
+      const std::uint64_t last = lastRecordStep(parseSceneFile(kScene, opt.overrides));
+      opt.overrides.push_back("run.trajectory_stride=" + std::to_string(last));
+      opt.output = dir.file("run.h5");
+      opt.quiet = true;
+      ASSERT_EQ(runParticles(opt, "granwave simulate (test)", "test-version"), kExitSuccess);
+      const H5mdReader run(opt.output);
+      SCOPED_TRACE(std::string(duration) + " s at " + frequency + " Hz");
+      EXPECT_EQ(run.recordCount(), last + 1);
+      ASSERT_EQ(run.frameCount(), 2u);
+      EXPECT_EQ(run.frame(1).step, last);
+    }
+  }
 }
 
 TEST(ParticleRun, OutputOverItsSceneIsRefusedBeforeAnyWork) {

@@ -64,6 +64,17 @@ TEST_F(StudyRunCacheTest, AnythingThatChangesTheResultChangesTheStem) {
             stem);
 }
 
+// A study's particle run keeps its first and last frame only (the default scene: 15 s at
+// 10 Hz and 100 phases per cycle, records 0 to 15000); a hydro run's scene is left as given.
+TEST_F(StudyRunCacheTest, ParticleRunKeepsTheFirstAndTheLastFrameOnly) {
+  const granwave::RunCache cache((dir_ / "runs").string(), "build-a");
+  const granwave::RunRecord r = cache.record(particleRequest());
+  EXPECT_EQ(r.request.scene.run.trajectory_stride, 15000);
+  granwave::RunRequest q = particleRequest();
+  q.kind = granwave::RunKind::Hydro;
+  EXPECT_EQ(cache.record(q).request.scene.run.trajectory_stride, 1);
+}
+
 TEST_F(StudyRunCacheTest, StoredRecordLoadsBackWithItsOutcomeAndFailureMessage) {
   const granwave::RunCache cache((dir_ / "runs").string(), "build-a");
   granwave::RunRecord r = cache.record(particleRequest());

@@ -63,6 +63,9 @@ TEST(StudyMeasurement, FormatPrintsValuePlusMinusErrorOrADashWhenInvalid) {
   EXPECT_EQ(granwave::format({1.6449, 0.4451}), "1.64 ± 0.45");
   EXPECT_EQ(granwave::format({1.64, 0.45}, 3), "1.640 ± 0.450");
   EXPECT_EQ(granwave::format({1.64, kNaN}), "1.64");
+  // Small numbers keep two significant digits of their error instead of printing 0.00000.
+  EXPECT_EQ(granwave::format({1.2e-7, 3.4e-7}), "(1.2 ± 3.4)e-7");
+  EXPECT_EQ(granwave::format({-5.5e-6, 1.3e-7}), "(-5.50 ± 0.13)e-6");
   EXPECT_EQ(granwave::format(Measurement{}), "–");
   EXPECT_EQ(granwave::formatNumber(kNaN), "–");
   EXPECT_EQ(granwave::formatNumber(0.125, 1), "0.1");
