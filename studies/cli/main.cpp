@@ -82,6 +82,32 @@ int flushedOutput(int code) {
   return code == 0 ? granwave::kExitFileError : code;
 }
 
+// The options of every command, filled by the parser.
+struct Commands {
+  granwave::SimulateOptions simulate;
+  granwave::FieldsOptions fields;
+  granwave::HydroOptions hydro;
+  granwave::StudyOptions study;
+  granwave::ExportOptions exported;
+};
+
+std::string commandLine(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+// The exit code of the command the parser chose.
+int runChosen(const CLI::App& app, const Commands& c, const granwave::MpiSession& mpi,
+              const std::string& command_line) {
+  if (app.got_subcommand("simulate")) return granwave::runSimulate(c.simulate, command_line);
+  if (app.got_subcommand("fields")) return granwave::runFields(c.fields);
+  if (app.got_subcommand("hydro")) return granwave::runHydro(c.hydro);
+  if (app.got_subcommand("study")) return granwave::runStudy(c.study, mpi);
+  if (app.got_subcommand("export")) return granwave::runExport(c.exported);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -95,16 +121,12 @@ int main(int argc, char** argv) {
       "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
   app.set_version_flag("--version", granwave::versionLine);
   app.require_subcommand(1);
-  granwave::SimulateOptions simulate;
-  granwave::addSimulateCommand(app, simulate);
-  granwave::FieldsOptions fields;
-  granwave::addFieldsCommand(app, fields);
-  granwave::HydroOptions hydro;
-  granwave::addHydroCommand(app, hydro);
-  granwave::StudyOptions study;
-  granwave::addStudyCommand(app, study);
-  granwave::ExportOptions exported;
-  granwave::addExportCommand(app, exported);
+  Commands commands;
+  granwave::addSimulateCommand(app, commands.simulate);
+  granwave::addFieldsCommand(app, commands.fields);
+  granwave::addHydroCommand(app, commands.hydro);
+  granwave::addStudyCommand(app, commands.study);
+  granwave::addExportCommand(app, commands.exported);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -114,21 +136,13 @@ int main(int argc, char** argv) {
     printError(hint.empty() ? std::string(e.what()) + " (see granwave --help)" : hint);
     return granwave::kExitInvalidInput;
   }
-
   // Under mpirun an error on one rank ends them all (the others may wait for it).
   auto stop = [&mpi](int code) {
     if (mpi.size() > 1) mpi.abort(code);
     return code;
   };
-  std::string command_line;
-  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
   try {
-    if (app.got_subcommand("simulate"))
-      return flushedOutput(granwave::runSimulate(simulate, command_line));
-    if (app.got_subcommand("fields")) return flushedOutput(granwave::runFields(fields));
-    if (app.got_subcommand("hydro")) return flushedOutput(granwave::runHydro(hydro));
-    if (app.got_subcommand("study")) return flushedOutput(granwave::runStudy(study, mpi));
-    if (app.got_subcommand("export")) return flushedOutput(granwave::runExport(exported));
+    return flushedOutput(runChosen(app, commands, mpi, commandLine(argc, argv)));
   } catch (const granwave::StudyInterrupted& e) {
     printError(e.what());
     return stop(granwave::kExitInterrupted);

@@ -175,6 +175,9 @@ void ParticleRun::refuseClashingFiles() const {
   if (checkpointed) {
     outputs.push_back({"checkpoint", out_ + ".checkpoint", true});
     outputs.push_back({"lock file", out_ + ".lock", true});
+    // The longest name a checkpoint copy takes (checkpoint K < 10^7): its temporary must fit.
+    if (!opt_.no_output)
+      outputs.push_back({"checkpoint copy", out_ + ".checkpoint-9999999.h5md", true});
   }
   if (!opt_.fields.empty()) {
     outputs.push_back({"fields file", opt_.fields});

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
-#include <tuple>
 
 #include "particles/EdSimulation.hpp"
 #include "particles/InitialState.hpp"
@@ -37,30 +36,32 @@ double closestPair(const InitialCondition& ic) {
   return closest;
 }
 
+// The capacity placed without overlap inside the walls; one particle more refused.
+void expectLatticeFillsItsCapacity(double width, double height, bool periodic) {
+  SCOPED_TRACE(std::to_string(width) + " x " + std::to_string(height));
+  const double d = latticeScene(width, height, periodic, 1).particles.diameter;
+  const long long capacity = TriangularLattice(width, height, d, periodic).capacity();
+  ASSERT_GT(capacity, 1);
+  const Scene full = latticeScene(width, height, periodic, capacity);
+  EXPECT_NO_THROW(validateScene(full, "full.toml"));
+  const InitialCondition ic = initialCondition(full, engineConfig(full));
+  ASSERT_EQ(static_cast<long long>(ic.x.size()), capacity);
+  EXPECT_GE(closestPair(ic), d);
+  EXPECT_LE(*std::max_element(ic.z.begin(), ic.z.end()), height - 0.5 * d);
+  if (!periodic) {
+    EXPECT_LE(*std::max_element(ic.x.begin(), ic.x.end()), width - 0.5 * d);
+  }
+  EXPECT_THROW(validateScene(latticeScene(width, height, periodic, capacity + 1), "over.toml"),
+               SceneError);
+}
+
 TEST(InitialState, LatticePlacementFillsExactlyTheCapacityTheSceneCheckAdmits) {
   // The paper's box, a periodic one, and widths at and just off a whole number of diameters.
-  for (const auto& [width, height, periodic] :
-       {std::tuple{0.1, 0.04, false}, std::tuple{0.1, 0.04, true}, std::tuple{0.02, 0.01, false},
-        std::tuple{0.020001, 0.0117, false}, std::tuple{0.0199999, 0.013, true}}) {
-    SCOPED_TRACE(std::to_string(width) + " x " + std::to_string(height));
-    const Scene probe = latticeScene(width, height, periodic, 1);
-    const long long capacity =
-        TriangularLattice(width, height, probe.particles.diameter, periodic).capacity();
-    ASSERT_GT(capacity, 1);
-    const Scene full = latticeScene(width, height, periodic, capacity);
-    EXPECT_NO_THROW(validateScene(full, "full.toml"));
-    const InitialCondition ic = initialCondition(full, engineConfig(full));
-    ASSERT_EQ(static_cast<long long>(ic.x.size()), capacity);
-    EXPECT_GE(closestPair(ic), full.particles.diameter);
-    for (std::size_t i = 0; i < ic.x.size(); ++i) {
-      EXPECT_LE(ic.z[i], height - 0.5 * full.particles.diameter);
-      if (!periodic) {
-        EXPECT_LE(ic.x[i], width - 0.5 * full.particles.diameter);
-      }
-    }
-    EXPECT_THROW(validateScene(latticeScene(width, height, periodic, capacity + 1), "over.toml"),
-                 SceneError);
-  }
+  expectLatticeFillsItsCapacity(0.1, 0.04, false);
+  expectLatticeFillsItsCapacity(0.1, 0.04, true);
+  expectLatticeFillsItsCapacity(0.02, 0.01, false);
+  expectLatticeFillsItsCapacity(0.020001, 0.0117, false);
+  expectLatticeFillsItsCapacity(0.0199999, 0.013, true);
 }
 
 }  // namespace

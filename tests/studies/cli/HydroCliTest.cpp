@@ -108,8 +108,8 @@ TEST_F(HydroCli, UndrivenSceneIsRejectedAndNothingWritten) {
 // The solver's step is at most half a phase, which forces 2 M steps a cycle: with M = 6000
 // phases that alone was past the old budget of 10000 steps a cycle ("no progress").
 TEST_F(HydroCli, FinePhaseResolutionRunsWithinTheStepBudget) {
-  const Result r = run("[hydro]\ncells = 20\n[run]\nphases_per_cycle = 6000\nduration = 0.8\n",
-                       "-o h.h5");
+  const Result r =
+      run("[hydro]\ncells = 20\n[run]\nphases_per_cycle = 6000\nduration = 0.8\n", "-o h.h5");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("periodic state  reached"), std::string::npos) << r.out;
 }

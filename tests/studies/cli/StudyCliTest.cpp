@@ -270,7 +270,8 @@ void expectOnlyRunRedone(const Result& r, int runs, const std::string& label) {
 
 }  // namespace
 
-TEST_F(StudyCli, TinyStudyWritesResultsAndReportThenRerunReusesEveryRunAndRedoesOnlyDeletedOrDamagedOne) {
+TEST_F(StudyCli,
+       TinyStudyWritesResultsAndReportThenRerunReusesEveryRunAndRedoesOnlyDeletedOrDamagedOne) {
   const std::string command = "study " + kTinyStudy + " -o out -j 2";
   const fs::path results = dir_ / "out" / "results.h5";
 
