@@ -19,17 +19,26 @@ class PathError : public std::invalid_argument {
 };
 
 // A file a command names, with its role for the messages ("run file", "fields sidecar").
+// `derived` marks a file the command makes from another one it names (a checkpoint, a
+// partial run file): checked as an output, but it may be a side file (SideFiles.hpp).
 struct NamedPath {
   std::string role;
   std::string path;
+  bool derived = false;
 };
 
-// PathError unless `path` names a regular file or a new name in an existing directory.
+// PathError unless `path` names a regular file or a new name in an existing directory that
+// this process may write in, short enough to take the temporary's suffix.
 void requireOutputPath(const std::string& path);
+// PathError unless `path` names a directory this process may write in, or a new name whose
+// nearest existing ancestor is one (so creating it cannot fail half way); `option` names the
+// option for the message ("-o", "--cache").
+void requireOutputDirectory(const std::string& path, const std::string& option);
 // PathError unless `path` names an existing regular file (symbolic links followed).
 void requireInputFile(const std::string& path);
 // PathError if two of the files are the same file and at least one of them is an output
-// (two inputs may well be one file). Also checks every output with requireOutputPath.
+// (two inputs may well be one file), or if a file named (not derived) is a side file of an
+// output (SideFiles.hpp). Also checks every output with requireOutputPath.
 void requireDistinct(const std::vector<NamedPath>& inputs, const std::vector<NamedPath>& outputs);
 // True if the two paths name the same file (existing or not), as described above.
 bool sameFile(const std::string& a, const std::string& b);

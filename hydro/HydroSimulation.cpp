@@ -114,12 +114,18 @@ CvodeOptions HydroSimulation::solverOptions() const {
   if (co.band_upper == 0) co.band_upper = co.band_lower = pde_.halfBand();
   const double T = 2 * std::numbers::pi / g.omega;
   if (co.max_step == 0) co.max_step = T / (2 * opt_.samples_per_cycle);
-  co.max_steps = opt_.max_steps_per_cycle;  // per output interval: at most a cycle's budget
+  co.max_steps = stepBudget();  // per output interval: at most a cycle's budget
   if (opt_.exact_jacobian && co.method == CvodeMethod::BdfBanded && !co.jacobian)
     co.jacobian = [this](double t, const double* y, const BandMatrixWriter& w) {
       return pde_.jacobian(t, y, w);
     };
   return co;
+}
+
+// max_step = T / (2 M) forces 2 M steps a cycle whatever the layer does: those are no sign
+// of a stalled solver, so the budget is on top of them.
+long HydroSimulation::stepBudget() const {
+  return opt_.max_steps_per_cycle + 2L * opt_.samples_per_cycle;
 }
 
 int HydroSimulation::detectPeriod(const std::vector<double>& h) const {
@@ -178,6 +184,8 @@ HydroResult HydroSimulation::run() {
         throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle + 1) + ")",
                            e.time(), cycle + 1);
       }
+      if (opt_.interrupt && opt_.interrupt->load())
+        throw HydroInterrupted("interrupted at t = " + std::to_string(t) + " s");
       HydroPhase ph = snapshot(t, cv.state());
       ph.budget = budget;
       r.com_per_phase.push_back(ph.center_of_mass_height);
@@ -188,10 +196,10 @@ HydroResult HydroSimulation::run() {
     r.steps_per_cycle.push_back(steps - steps_before);
     steps_before = steps;
     r.cycles = cycle + 1;
-    if (r.steps_per_cycle.back() > opt_.max_steps_per_cycle)
+    if (r.steps_per_cycle.back() > stepBudget())
       throw HydroFailure("no progress: cycle " + std::to_string(r.cycles) + " needed " +
                              std::to_string(r.steps_per_cycle.back()) + " steps (budget " +
-                             std::to_string(opt_.max_steps_per_cycle) + "), last step " +
+                             std::to_string(stepBudget()) + "), last step " +
                              std::to_string(cv.stats().last_step) + " s",
                          cv.time(), r.cycles);
     if (r.cycles < ramp + opt_.min_cycles) continue;

@@ -11,6 +11,7 @@
 //
 // It fails fast, with one line saying why, instead of grinding: a cycle that needs more than
 // `max_steps_per_cycle` steps, or any CVODE failure, ends the run (HydroFailure).
+#include <atomic>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -36,7 +37,11 @@ struct HydroRunOptions {
   // The starting layer: settled on the plate (hydro/SettledLayer.hpp, settledLayer), or spread
   // evenly over the container as the particle engine places its grains (spreadLayer).
   enum class Start { Settled, Spread } start = Start::Settled;
+  // The steps a cycle may take beyond the 2 per phase that max_step forces (solverOptions);
+  // more means the solver makes no progress.
   long max_steps_per_cycle = 10000;
+  // Polled after every phase (nullptr: never): set, the run ends with HydroInterrupted.
+  const std::atomic<bool>* interrupt = nullptr;
 };
 
 // The energy that crossed the layer's budget over one phase interval (J/m), and its closure;
@@ -98,6 +103,12 @@ class HydroFailure : public std::runtime_error {
   int cycle_;
 };
 
+// A run stopped by its interrupt flag (HydroRunOptions::interrupt): nothing to keep.
+class HydroInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
 class HydroSimulation {
  public:
   HydroSimulation(const GranularHydro1D& pde, const HydroRunOptions& options);
@@ -111,6 +122,7 @@ class HydroSimulation {
   PhaseBudget advanceWithBudget(CvodeIntegrator& cv, double t) const;
   CvodeOptions solverOptions() const;
   int detectPeriod(const std::vector<double>& com) const;
+  long stepBudget() const;
   HydroRegime classify(const std::vector<HydroPhase>& window) const;
   const GranularHydro1D& pde_;
   HydroRunOptions opt_;

@@ -9,6 +9,9 @@
 #include <unordered_map>
 #include <utility>
 
+#include "scene/PlacementCapacity.hpp"
+#include "scene/SceneParser.hpp"
+
 namespace granwave {
 
 namespace {
@@ -82,10 +85,11 @@ void placeRandomly(InitialCondition& ic, int n, const EngineConfig& c, std::mt19
   for (int i = 0; i < n; ++i) {
     for (;;) {
       if (++attempts > max_attempts)
-        throw std::invalid_argument(fmt::format(
-            "initial.placement = \"random\" could place only {} of {} particles without overlap; "
-            "use initial.placement = \"lattice\" or a larger container",
-            i, n));
+        throw SceneError(fmt::format(
+            "particles.count = {}: initial.placement = \"random\" could place only {} without "
+            "overlap in {} attempts (random placement jams below {} of the area); use "
+            "initial.placement = \"lattice\", fewer particles or a larger container",
+            n, i, max_attempts, kRandomJammingCoverage));
       const double x = ux(rng), z = uz(rng);
       if (!grid.fits(ic, x, z)) continue;
       ic.x.push_back(x);
@@ -100,34 +104,28 @@ void placeOnLattice(InitialCondition& ic, int n, const EngineConfig& c) {
   const double d = c.diameter;
   if (c.periodic_x && c.periodic_z) {
     // Square lattice spread over the whole periodic box.
-    const int cols = static_cast<int>(std::ceil(std::sqrt(n * c.width / c.height)));
-    const int rows = (n + cols - 1) / cols;
-    const double ax = c.width / cols, az = c.height / rows;
-    if (ax < d || az < d)
-      throw std::invalid_argument(fmt::format(
+    const SquareLattice lattice(n, c.width, c.height);
+    if (!lattice.fits(d))
+      throw SceneError(fmt::format(
           "initial.placement = \"lattice\": {} particles do not fit on a square lattice in the "
           "periodic box (spacing {:.4g} x {:.4g} m < d)",
-          n, ax, az));
+          n, lattice.spacing_x, lattice.spacing_z));
     for (int i = 0; i < n; ++i) {
-      ic.x.push_back((i % cols + 0.5) * ax);
-      ic.z.push_back((i / cols + 0.5) * az);
+      ic.x.push_back((i % lattice.columns + 0.5) * lattice.spacing_x);
+      ic.z.push_back((i / lattice.columns + 0.5) * lattice.spacing_z);
     }
     return;
   }
-  // Triangular lattice resting on the bottom, rows filled from below.
-  const double s = d * (1.0 + 1e-6);
-  const double row = s * std::sqrt(3.0) / 2.0;
-  const double x0 = c.periodic_x ? 0.0 : 0.5 * d;
-  const double xmax = c.periodic_x ? c.width - s : c.width - 0.5 * d;
+  // Triangular lattice resting on the bottom, rows filled from below (scene/PlacementCapacity).
+  const TriangularLattice lattice(c.width, c.height, d, c.periodic_x);
   int i = 0;
   for (int r = 0; i < n; ++r) {
-    const double z = 0.5 * d + r * row;
-    if (z > c.height - 0.5 * d)
-      throw std::invalid_argument(fmt::format(
+    if (r >= lattice.rows())
+      throw SceneError(fmt::format(
           "initial.placement = \"lattice\": only {} of {} particles fit in the container", i, n));
-    for (double x = x0 + (r % 2) * 0.5 * s; x <= xmax + 1e-12 && i < n; x += s, ++i) {
-      ic.x.push_back(x);
-      ic.z.push_back(z);
+    for (int k = 0; k < lattice.sites(r) && i < n; ++k, ++i) {
+      ic.x.push_back(lattice.x0(r) + k * lattice.spacing());
+      ic.z.push_back(lattice.z(r));
     }
   }
 }

@@ -9,6 +9,7 @@
 #include <numbers>
 #include <tuple>
 
+#include "scene/PlacementCapacity.hpp"
 #include "scene/SceneDerived.hpp"
 #include "scene/SceneDetail.hpp"
 #include "scene/SceneParser.hpp"
@@ -25,8 +26,6 @@ std::string SceneOrigins::describe(std::string_view key, std::string_view value)
 
 namespace {
 
-// Hexagonal close packing of equal disks, pi / (2 sqrt 3): the densest 2D packing.
-constexpr double kHexagonalPacking = 0.9069;
 constexpr long long kMaxParticles = 1'000'000;
 constexpr double kMaxRecords = 1e6;
 constexpr double kMaxStoredFrames = 2.5e8;
@@ -82,6 +81,8 @@ class Checker {
   void records() const;
   void drive() const;
   void geometry() const;
+  void fallingBox() const;
+  void placement() const;
 
  private:
   const Scene& s_;
@@ -244,15 +245,52 @@ void Checker::geometry() const {
                      tomlNumber(box.height),
                      std::floor(box.width / d) * std::floor(box.height / d)));
   }
-  const double occupied = s_.particles.count * std::numbers::pi * d * d / 4.0;
-  const double available = kHexagonalPacking * box.width * box.height;
-  if (occupied > available) {
-    fail("particles.count", std::to_string(s_.particles.count),
-         fmt::format("more particles than fit: N pi d^2/4 = {:.4g} m^2 exceeds the hexagonal close "
-                     "packing limit 0.9069 x width x height = {:.4g} m^2 (at most {} particles)",
-                     occupied, available,
-                     static_cast<long long>(available / (std::numbers::pi * d * d / 4.0))));
+}
+
+// What the initial placement can fit (scene/PlacementCapacity.hpp), not the close-packing
+// bound: a scene that passes here is placed.
+void Checker::placement() const {
+  const double d = s_.particles.diameter;
+  const auto& box = s_.container;
+  const long long n = s_.particles.count;
+  const TriangularLattice resting(box.width, box.height, d, box.periodic_x);
+  const bool fully_periodic = box.periodic_x && box.periodic_z;
+  if (s_.initial.placement == InitialPlacement::Lattice) {
+    if (fully_periodic && !SquareLattice(n, box.width, box.height).fits(d))
+      fail("particles.count", std::to_string(n),
+           "more particles than fit on the square lattice of initial.placement = \"lattice\" "
+           "in this periodic box (a spacing would be below one diameter)");
+    if (!fully_periodic && n > resting.capacity())
+      fail("particles.count", std::to_string(n),
+           fmt::format("more particles than fit: the lattice of initial.placement = \"lattice\" "
+                       "holds at most {} in this container",
+                       resting.capacity()));
+    return;
   }
+  const double disk = std::numbers::pi * d * d / 4.0;
+  const auto reachable =
+      static_cast<long long>(kRandomJammingCoverage * box.width * box.height / disk);
+  if (n > reachable)
+    fail("particles.count", std::to_string(n),
+         fmt::format(
+             "more particles than initial.placement = \"random\" can place: random "
+             "placement jams at {} of the area (at most {} here); use initial.placement "
+             "= \"lattice\"{}",
+             kRandomJammingCoverage, reachable,
+             fully_periodic ? std::string() : fmt::format(" (at most {})", resting.capacity())));
+}
+
+// A box periodic along gravity has no floor: the layer falls for ever, and each particle that
+// wraps from the bottom to the top gains m g H of potential energy from nowhere, so the
+// energy balance (and any steady state) is meaningless. Without gravity the same box is a
+// free gas (homogeneous cooling, the effective-restitution study).
+void Checker::fallingBox() const {
+  if (!s_.container.periodic_z || s_.run.gravity == 0) return;
+  fail("container.periodic_z", "true",
+       fmt::format("a box periodic along gravity (run.gravity = {}) has no floor: the layer "
+                   "falls for ever and gains m g H at each wrap; set run.gravity = 0 or "
+                   "container.periodic_z = false",
+                   tomlNumber(s_.run.gravity)));
 }
 
 }  // namespace
@@ -263,7 +301,9 @@ void validateScene(const Scene& scene, const SceneOrigins& origins) {
   check.temperature();
   check.records();
   check.geometry();
+  check.placement();
   check.drive();
+  check.fallingBox();
 }
 
 }  // namespace detail

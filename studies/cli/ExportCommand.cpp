@@ -13,6 +13,7 @@
 #include "scene/SceneParser.hpp"
 #include "studies/cli/OptionChecks.hpp"
 #include "studies/cli/Version.hpp"
+#include "studies/runner/InterruptFlag.hpp"
 
 namespace granwave {
 
@@ -69,7 +70,7 @@ void addExportCommand(CLI::App& app, ExportOptions& opt) {
                       " (default: the one the output's extension names, else extxyz)")
       ->check(CLI::IsMember(names));
   cmd->add_option("--every", opt.every, "Write every K-th frame")
-      ->check(CLI::PositiveNumber)
+      ->check(numberAbove(0, false))
       ->capture_default_str();
 }
 
@@ -88,7 +89,12 @@ int runExport(const ExportOptions& opt) {
   const std::unique_ptr<TrajectoryWriter> writer =
       makeTrajectoryWriter(format.format, file.temporaryPath(), out, header);
   const auto every = static_cast<std::size_t>(opt.every);
-  for (std::size_t i = 0; i < run.frameCount(); i += every) writer->write(run.frame(i));
+  // SIGINT/SIGTERM stop at the next frame with exit 130; `file` then removes the temporary.
+  const std::atomic<bool>& interrupt = installInterruptFlag();
+  for (std::size_t i = 0; i < run.frameCount(); i += every) {
+    if (interrupt.load()) throw Interrupted("interrupted; nothing written");
+    writer->write(run.frame(i));
+  }
   writer->close();
   file.commit();
   fmt::print("run             {}\n", opt.run_path);

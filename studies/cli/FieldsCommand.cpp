@@ -12,10 +12,14 @@
 #include "studies/particle_run/FieldsSetup.hpp"
 #include "studies/particle_run/RunFileFields.hpp"
 #include "studies/particle_run/RunSummary.hpp"
+#include "studies/runner/InterruptFlag.hpp"
 
 namespace granwave {
 
 namespace {
+constexpr int kMaxDiscard = 1000000;
+
+// After autoOrWholeNumber (OptionChecks.hpp) has checked the text at parse time.
 int parseChoice(const std::string& value, const char* option, int lo, int hi) {
   if (value == "auto") return -1;
   try {
@@ -39,11 +43,13 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
   cmd->add_option(
          "--period", opt.period,
          "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4")
+      ->check(autoOrWholeNumber(1, 4))
       ->capture_default_str();
   cmd->add_option("--blocks", opt.blocks, "Independent blocks of cycles for uncertainties")
       ->check(CLI::Range(2, 50))
       ->capture_default_str();
   cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number")
+      ->check(autoOrWholeNumber(0, kMaxDiscard))
       ->capture_default_str();
   cmd->add_option("--front-threshold", opt.front_threshold,
                   "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
@@ -58,7 +64,7 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
 int runFields(const FieldsOptions& opt) {
   RunFileFieldsOptions fields;
   fields.period = parseChoice(opt.period, "--period", 1, 4);
-  fields.discard = parseChoice(opt.discard, "--discard", 0, 1000000);
+  fields.discard = parseChoice(opt.discard, "--discard", 0, kMaxDiscard);
   fields.blocks = opt.blocks;
   fields.front_threshold = opt.front_threshold;
   fields.state_fields = opt.state_fields;
@@ -67,7 +73,11 @@ int runFields(const FieldsOptions& opt) {
     out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   files::requireDistinct({{"run file", opt.run_path}},
                          {{"fields file", out}, {"fields sidecar", xdmfSidecarPath(out)}});
+  // SIGINT/SIGTERM stop the replay at the next frame with exit 130, nothing written.
+  const std::atomic<bool>& interrupt = installInterruptFlag();
+  fields.interrupt = &interrupt;
   const FieldsAnalysis a = fieldsOfRunFile(opt.run_path, fields);
+  if (interrupt.load()) throw Interrupted("interrupted; nothing written");
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (a.context.layer_period > 0)

@@ -10,6 +10,7 @@
 #include "studies/cli/OptionChecks.hpp"
 #include "studies/hydro_run/HydroRun.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
+#include "studies/runner/InterruptFlag.hpp"
 
 namespace granwave {
 
@@ -87,9 +88,14 @@ int runHydro(const HydroOptions& opt) {
   std::string out = opt.output;
   if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".hydro.h5";
   files::requireDistinct({{"scene", opt.scene_path}}, {{"hydro run file", out}});
+  // SIGINT/SIGTERM end the run at the next phase with exit 130, nothing written.
+  const std::atomic<bool>& interrupt = installInterruptFlag();
   const HydroRunContent content =
-      runHydroScene(scene, opt.scene_path, opt.quiet ? nullptr : stderr);
-  writeHydroRunFile(out, content);
+      runHydroScene(scene, opt.scene_path, opt.quiet ? nullptr : stderr, &interrupt);
+  if (interrupt.load()) throw hydro::HydroInterrupted("interrupted; nothing written");
+  writeHydroRunFile(out, content);  // atomic: an interrupt now waits for the whole file
+  if (interrupt.load())
+    throw hydro::HydroInterrupted("interrupted once " + out + " was written (it is complete)");
   printSummary(opt, scene, content, out);
   return 0;
 }

@@ -34,7 +34,7 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Save a checkpoint every this many seconds of wall time (and on Ctrl-C); "
                   "the same command then continues a killed run from it (default: none)")
-      ->check(CLI::PositiveNumber)
+      ->check(numberAbove(0, false))
       ->check(finiteNumber());
 }
 

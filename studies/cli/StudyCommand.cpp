@@ -21,11 +21,11 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
                   "Run cache directory, shared by studies that use the same runs (default: "
                   "OUTDIR/runs)");
   cmd->add_option("-j,--jobs", opt.jobs, "Runs at a time (default: [study] jobs, else all cores)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(numberAbove(0, true));
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Seconds of wall time between checkpoints of a particle run, from which a "
                   "killed study continues it (0 = none)")
-      ->check(CLI::NonNegativeNumber)
+      ->check(numberAbove(0, true))
       ->check(finiteNumber())
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress lines");

@@ -3,6 +3,10 @@
 #include <fmt/format.h>
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <string>
@@ -24,6 +28,7 @@
 #include "studies/particle_run/OutsideFailure.hpp"
 #include "studies/run_files/RunCheckpoint.hpp"
 #include "studies/runner/ExitCode.hpp"
+#include "studies/runner/InterruptFlag.hpp"
 #include "studies/runner/RemoteWorkers.hpp"
 #include "studies/runner/RunScheduler.hpp"
 
@@ -43,28 +48,85 @@ std::string oneLine(const std::string& text) {
   return out;
 }
 
-void printError(const std::string& what) { fmt::print(stderr, "granwave: {}\n", oneLine(what)); }
+// A value a message quotes may be a megabyte of --set value or a 4000-character path: a word
+// longer than kLongWord is cut to its first 60 characters, and the whole message to kLongLine.
+constexpr std::size_t kLongWord = 200, kLongLine = 2000;
+
+std::string shortened(const std::string& text) {
+  std::string out;
+  std::size_t start = 0;
+  while (start < text.size() && out.size() < kLongLine) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::size_t length = end - start;
+    if (length > kLongWord)
+      out += fmt::format("{}... ({} characters)", text.substr(start, 60), length);
+    else
+      out += text.substr(start, length);
+    if (end < text.size()) out += ' ';
+    start = end + 1;
+  }
+  if (out.size() > kLongLine) out = out.substr(0, kLongLine) + "...";
+  return out;
+}
+
+void printError(const std::string& what) {
+  fmt::print(stderr, "granwave: {}\n", oneLine(shortened(what)));
+}
+
+// The summary a command printed must reach its reader: stdout is buffered, so a failed write
+// (a full disk, /dev/full) shows only when it is flushed. Exit 74 then, like any failed write.
+int flushedOutput(int code) {
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return code;
+  printError(fmt::format("standard output: cannot write the summary ({})", std::strerror(errno)));
+  return code == 0 ? granwave::kExitFileError : code;
+}
+
+// The options of every command, filled by the parser.
+struct Commands {
+  granwave::SimulateOptions simulate;
+  granwave::FieldsOptions fields;
+  granwave::HydroOptions hydro;
+  granwave::StudyOptions study;
+  granwave::ExportOptions exported;
+};
+
+std::string commandLine(int argc, char** argv) {
+  std::string line;
+  for (int i = 0; i < argc; ++i) line += (i ? " " : "") + std::string(argv[i]);
+  return line;
+}
+
+// The exit code of the command the parser chose.
+int runChosen(const CLI::App& app, const Commands& c, const granwave::MpiSession& mpi,
+              const std::string& command_line) {
+  if (app.got_subcommand("simulate")) return granwave::runSimulate(c.simulate, command_line);
+  if (app.got_subcommand("fields")) return granwave::runFields(c.fields);
+  if (app.got_subcommand("hydro")) return granwave::runHydro(c.hydro);
+  if (app.got_subcommand("study")) return granwave::runStudy(c.study, mpi);
+  if (app.got_subcommand("export")) return granwave::runExport(c.exported);
+  return 0;
+}
 
 }  // namespace
 
 int main(int argc, char** argv) {
   granwave::h5::skipLibraryShutdownAtExit();  // h5/ErrorStack.hpp says why
+  // A write past the file-size limit (ulimit -f) then fails with EFBIG like any other failed
+  // write (exit 74, one line, temporaries removed) instead of killing the process.
+  std::signal(SIGXFSZ, SIG_IGN);
   // Before anything else: MPI may rewrite argc/argv. A no-op outside mpirun.
   granwave::MpiSession mpi(argc, argv);
   CLI::App app{
       "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
   app.set_version_flag("--version", granwave::versionLine);
   app.require_subcommand(1);
-  granwave::SimulateOptions simulate;
-  granwave::addSimulateCommand(app, simulate);
-  granwave::FieldsOptions fields;
-  granwave::addFieldsCommand(app, fields);
-  granwave::HydroOptions hydro;
-  granwave::addHydroCommand(app, hydro);
-  granwave::StudyOptions study;
-  granwave::addStudyCommand(app, study);
-  granwave::ExportOptions exported;
-  granwave::addExportCommand(app, exported);
+  Commands commands;
+  granwave::addSimulateCommand(app, commands.simulate);
+  granwave::addFieldsCommand(app, commands.fields);
+  granwave::addHydroCommand(app, commands.hydro);
+  granwave::addStudyCommand(app, commands.study);
+  granwave::addExportCommand(app, commands.exported);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -74,23 +136,22 @@ int main(int argc, char** argv) {
     printError(hint.empty() ? std::string(e.what()) + " (see granwave --help)" : hint);
     return granwave::kExitInvalidInput;
   }
-
   // Under mpirun an error on one rank ends them all (the others may wait for it).
   auto stop = [&mpi](int code) {
     if (mpi.size() > 1) mpi.abort(code);
     return code;
   };
-  std::string command_line;
-  for (int i = 0; i < argc; ++i) command_line += (i ? " " : "") + std::string(argv[i]);
   try {
-    if (app.got_subcommand("simulate")) return granwave::runSimulate(simulate, command_line);
-    if (app.got_subcommand("fields")) return granwave::runFields(fields);
-    if (app.got_subcommand("hydro")) return granwave::runHydro(hydro);
-    if (app.got_subcommand("study")) return granwave::runStudy(study, mpi);
-    if (app.got_subcommand("export")) return granwave::runExport(exported);
+    return flushedOutput(runChosen(app, commands, mpi, commandLine(argc, argv)));
   } catch (const granwave::StudyInterrupted& e) {
     printError(e.what());
     return stop(granwave::kExitInterrupted);
+  } catch (const granwave::Interrupted& e) {
+    printError(e.what());
+    return granwave::kExitInterrupted;
+  } catch (const granwave::hydro::HydroInterrupted& e) {
+    printError(e.what());
+    return granwave::kExitInterrupted;
   } catch (const granwave::StudyError& e) {
     printError(e.what());
     return stop(granwave::kExitInvalidInput);

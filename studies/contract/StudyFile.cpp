@@ -7,6 +7,7 @@
 #include <limits>
 #include <sstream>
 
+#include "files/OutputPath.hpp"
 #include "scene/NameSuggestion.hpp"
 #include "studies/installation/InstalledFiles.hpp"
 
@@ -141,7 +142,16 @@ std::string StudyFile::scenePath(std::string_view section, std::string_view key,
               std::filesystem::path(installedFile("studies")) / given};
   std::string looked;
   for (const std::filesystem::path& place : places) {
-    if (std::filesystem::is_regular_file(place)) return place.lexically_normal().string();
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(place, ec)) return place.lexically_normal().string();
+    // A FIFO or a directory of that name is there, but is no scene: say what it is.
+    if (std::filesystem::exists(place, ec)) {
+      try {
+        files::requireInputFile(place.lexically_normal().string());
+      } catch (const files::PathError& e) {
+        fail(section, key, e.what());
+      }
+    }
     looked += (looked.empty() ? "" : " and ") + place.lexically_normal().string();
   }
   fail(section, key, fmt::format("no such file (looked in {})", looked));

@@ -3,6 +3,7 @@
 // (HydroModel.hpp) integrated from the settled layer to its periodic state, and what the hydro
 // run file holds of it: the plate-frame fields, the lab frame with its fronts (LabFrame.hpp)
 // and the solver's figures.
+#include <atomic>
 #include <cstdio>
 #include <string>
 
@@ -18,10 +19,12 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& derived,
                                 const hydro::HydroResult& result,
                                 const hydro::HydroRunOptions& options);
 
-// Runs the scene. A scene without drive or without bottom and lid is refused with a one-line
-// std::runtime_error naming `scene_name`; a solver failure is a hydro::HydroFailure. A line on
-// `progress` (nullptr: none) says how many cycles it may take.
+// Runs the scene. A scene the continuum cannot integrate (no drive, no bottom and lid, rough
+// particles that are smooth) is refused with a one-line SceneError naming `scene_name`; a
+// solver failure is a hydro::HydroFailure; an `interrupt` set (SIGINT/SIGTERM) ends it with
+// hydro::HydroInterrupted at the next phase. A line on `progress` (nullptr: none) says how
+// many cycles it may take.
 HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
-                              std::FILE* progress);
+                              std::FILE* progress, const std::atomic<bool>* interrupt = nullptr);
 
 }  // namespace granwave

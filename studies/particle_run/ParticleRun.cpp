@@ -164,12 +164,21 @@ int ParticleRun::finish(const RunStatus& status) {
   return code;
 }
 
-// Before any work: no output over the scene, a device or another output (files/).
+// Before any work: no output over the scene, a device or another output, and no file named
+// like one this run makes beside its outputs and removes (files/SideFiles.hpp).
 void ParticleRun::refuseClashingFiles() const {
   std::vector<files::NamedPath> outputs;
-  if (!opt_.no_output) outputs.push_back({"run file", out_});
-  if (!opt_.no_output && opt_.checkpoint_every > 0)
-    outputs.push_back({"checkpoint", out_ + ".checkpoint"});
+  const bool checkpointed = opt_.checkpoint_every > 0;
+  // A checkpointed run keeps its lock beside the run file even with --no-output.
+  if (!opt_.no_output || checkpointed) outputs.push_back({"run file", out_});
+  if (!opt_.no_output) outputs.push_back({"partial run file", out_ + ".interrupted", true});
+  if (checkpointed) {
+    outputs.push_back({"checkpoint", out_ + ".checkpoint", true});
+    outputs.push_back({"lock file", out_ + ".lock", true});
+    // The longest name a checkpoint copy takes (checkpoint K < 10^7): its temporary must fit.
+    if (!opt_.no_output)
+      outputs.push_back({"checkpoint copy", out_ + ".checkpoint-9999999.h5md", true});
+  }
   if (!opt_.fields.empty()) {
     outputs.push_back({"fields file", opt_.fields});
     outputs.push_back({"fields sidecar", xdmfSidecarPath(opt_.fields)});

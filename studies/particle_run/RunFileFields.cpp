@@ -2,14 +2,17 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 
 #include "coarse_grain/PeriodDetector.hpp"
 #include "coarse_grain/SteadyStateDetector.hpp"
+#include "files/OutputPath.hpp"
 #include "particles/H5mdReader.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/particle_run/FieldsSetup.hpp"
+#include "studies/runner/InterruptFlag.hpp"
 
 namespace granwave {
 
@@ -28,6 +31,17 @@ Scene replayableScene(const H5mdReader& run, const std::string& path) {
   if (!run.completed())
     fmt::print(stderr, "granwave: {} is an interrupted run; using what it holds\n", path);
   return scene;
+}
+
+// A NaN in a frame would spread through every average it enters: the file is damaged.
+void requireFiniteFrame(const Snapshot& s, std::size_t i, const std::string& path) {
+  for (const std::vector<double>* v : {&s.x, &s.z, &s.vx, &s.vz, &s.omega})
+    for (double value : *v)
+      if (!std::isfinite(value))
+        throw files::PathError(fmt::format(
+            "{}: frame {} (t = {:.6g} s) holds a non-finite position or velocity; the run file "
+            "is damaged, simulate the scene again",
+            path, i, s.time));
 }
 
 }  // namespace
@@ -65,7 +79,9 @@ FieldsAnalysis fieldsOfRunFile(const std::string& path, const RunFileFieldsOptio
   PatternSampler patterns({M});
   SurfaceRecorder surface(surfaceRecorderConfig(scene));
   for (std::size_t i = 0; i < run.frameCount(); ++i) {
+    if (opt.interrupt && opt.interrupt->load()) throw Interrupted("interrupted; nothing written");
     const Snapshot s = run.frame(i);
+    requireFiniteFrame(s, i, path);
     averager.observe(s);
     if (states) states->observe(s);
     patterns.observe(s);

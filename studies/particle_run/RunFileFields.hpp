@@ -4,6 +4,7 @@
 // recorder and, if asked, the state-conditioned averager; the layer's period and its period-2
 // series by the rule every command uses (coarse_grain/PeriodDetector.hpp, runPeriod), so a run
 // has one period.
+#include <atomic>
 #include <string>
 
 #include "coarse_grain/FieldsAnalysis.hpp"
@@ -16,10 +17,13 @@ struct RunFileFieldsOptions {
   int blocks = 5;                // independent blocks of cycles for the errors
   double front_threshold = 0.5;  // T~_g / T0 of a front (paper: 0.5)
   bool state_fields = false;     // also average the fields per layer state (/states)
+  const std::atomic<bool>* interrupt = nullptr;  // polled per frame: set, Interrupted
 };
 
 // Throws std::runtime_error naming the run file if its scene is not driven, if it lacks a
-// trajectory frame at some record, or if the layer never became steady.
+// trajectory frame at some record, or if the layer never became steady; files::PathError
+// naming the frame if a frame holds a non-finite position or velocity (a damaged file);
+// Interrupted (studies/runner/InterruptFlag.hpp) once the interrupt flag is set.
 FieldsAnalysis fieldsOfRunFile(const std::string& run_path, const RunFileFieldsOptions& options);
 
 }  // namespace granwave

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "files/SideFiles.hpp"
 #include "h5/AtomicFile.hpp"
 #include "h5/H5Error.hpp"
 #include "particles/EdSimulation.hpp"
@@ -73,12 +74,12 @@ std::string RunCheckpoint::copyPath(std::uint64_t k) const {
 void RunCheckpoint::removeCopiesExcept(const std::string& keep) const {
   const std::filesystem::path run(run_path_);
   const std::filesystem::path dir = run.parent_path().empty() ? "." : run.parent_path();
-  const std::string prefix = run.filename().string() + ".checkpoint-";
+  const std::string prefix = run.filename().string();
   const std::string kept = keep.empty() ? "" : std::filesystem::path(keep).filename().string();
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    if (name.rfind(prefix, 0) != 0 || name == kept) continue;
+    if (!files::isCheckpointCopyOf(name, prefix) || name == kept) continue;
     std::filesystem::remove(entry.path(), ec);
   }
 }

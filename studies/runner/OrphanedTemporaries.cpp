@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "files/SideFiles.hpp"
+
 namespace granwave {
 
 namespace {
@@ -34,11 +36,9 @@ void removeOrphanedTemporaries(const std::string& path) {
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     const std::string name = entry.path().filename().string();
-    const std::size_t mark = name.rfind(".tmp-");
-    if (name.rfind(prefix, 0) != 0 || mark == std::string::npos) continue;
-    const std::string digits = name.substr(mark + 5);
-    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) continue;
-    const pid_t pid = static_cast<pid_t>(std::stol(digits));
+    long named = 0;
+    if (!files::isTemporaryOf(name, prefix, named)) continue;
+    const auto pid = static_cast<pid_t>(named);
     if (pid == ::getpid() || processIsRunning(pid)) continue;
     std::filesystem::remove(entry.path(), ec);
   }

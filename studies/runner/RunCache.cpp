@@ -29,9 +29,20 @@ std::uint64_t fnv1a(std::string_view bytes, std::uint64_t h = 146959810393466560
 
 }  // namespace
 
-RunCache::RunCache(std::string directory, std::string build_id)
-    : directory_(std::move(directory)), build_id_(std::move(build_id)) {
+RunCache::RunCache(std::string directory, std::string build_id, ReadableCheck readable)
+    : directory_(std::move(directory)),
+      build_id_(std::move(build_id)),
+      readable_(std::move(readable)) {
   std::filesystem::create_directories(directory_);
+}
+
+// Outputs are renamed into place complete and the record follows them, so an output that
+// exists but does not open was damaged afterwards (a disk error, a careless truncate).
+bool RunCache::usable(const std::string& path) const {
+  if (!std::filesystem::exists(path)) return false;
+  if (!readable_ || readable_(path)) return true;
+  fmt::print(stderr, "granwave study: {} cannot be read; making that run again\n", path);
+  return false;
 }
 
 RunRecord RunCache::record(const RunRequest& given) const {
@@ -83,8 +94,8 @@ bool RunCache::load(RunRecord& r) const {
     r.reused = true;
     return true;
   }
-  if (r.ok && !std::filesystem::exists(hydro ? r.hydroPath() : r.runPath())) return false;
-  if (r.ok && !hydro && r.request.fields && !std::filesystem::exists(r.fieldsPath())) return false;
+  if (r.ok && !usable(hydro ? r.hydroPath() : r.runPath())) return false;
+  if (r.ok && !hydro && r.request.fields && !usable(r.fieldsPath())) return false;
   r.reused = true;
   return true;
 }

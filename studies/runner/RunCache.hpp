@@ -6,6 +6,7 @@
 // the record is written atomically after the run's own (atomic) outputs, so an interrupted
 // study resumes with exactly the runs it finished. Failed runs (collapse, solver failure)
 // are recorded too: they are results (where methods fail), and deterministic.
+#include <functional>
 #include <string>
 
 #include "studies/runner/RunRequest.hpp"
@@ -14,7 +15,12 @@ namespace granwave {
 
 class RunCache {
  public:
-  RunCache(std::string directory, std::string build_id);
+  // True if an output file of a finished run can be read (its format's reader opens it).
+  using ReadableCheck = std::function<bool(const std::string& path)>;
+
+  // With `readable`, a record whose output is no longer readable (truncated, damaged since)
+  // does not count: the run is made again and its output replaced, as for a removed output.
+  RunCache(std::string directory, std::string build_id, ReadableCheck readable = {});
 
   const std::string& directory() const { return directory_; }
   // The record with its stem filled in (and ok/cpu/... if it is done). A particle run's scene
@@ -25,7 +31,10 @@ class RunCache {
   void store(const RunRecord& record) const;
 
  private:
+  bool usable(const std::string& path) const;
+
   std::string directory_, build_id_;
+  ReadableCheck readable_;
 };
 
 // FNV-1a 64-bit hash of the running executable's bytes, as 16 hex digits.

@@ -118,15 +118,25 @@ int runStudyPlan(const StudyRunOptions& opt, const StudyFile& file, const Study&
 
   std::string outdir = opt.output;
   if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
+  const std::string cache_dir =
+      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  // Both checked before either is made: a refused --cache leaves no empty output directory.
+  files::requireOutputDirectory(outdir, "-o");
+  if (!opt.cache.empty()) files::requireOutputDirectory(cache_dir, "--cache");
   std::filesystem::create_directories(outdir);
   const std::string results = (std::filesystem::path(outdir) / "results.h5").string();
   const std::string html = (std::filesystem::path(outdir) / "report.html").string();
   files::requireDistinct({{"study file", opt.study_path}},
                          {{"results file", results}, {"report", html}});
-  const std::string cache_dir =
-      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
   const std::string build_id = buildIdentity();
-  const RunCache cache(cache_dir, build_id);
+  const RunCache cache(cache_dir, build_id, [](const std::string& path) {
+    try {
+      h5::File::openReadOnly(path);
+      return true;
+    } catch (const std::exception&) {
+      return false;
+    }
+  });
   if (mpi.rank() > 0) {
     workerLoop(mpi, planRecords(plan, cache),
                [&opt](const RunRecord& r) { return childArguments(r, opt.checkpoint_every); });

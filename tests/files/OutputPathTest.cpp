@@ -103,3 +103,49 @@ TEST(OutputPath, TemporaryIsBesideTheTargetAndNamedForThisProcess) {
   EXPECT_EQ(granwave::files::temporaryFor("out/run.h5"),
             "out/run.h5.tmp-" + std::to_string(::getpid()));
 }
+
+TEST(OutputPath, NameTooLongForTheTemporaryIsRefusedWithItsLength) {
+  const ScratchDir dir;
+  const std::string message = refusal([&] { requireOutputPath(dir.file(std::string(250, 'n'))); });
+  EXPECT_NE(message.find("a file name of 250 characters is too long"), std::string::npos)
+      << message;
+  EXPECT_LT(message.size(), 200u) << message;
+  EXPECT_EQ(refusal([&] { requireOutputPath(dir.file(std::string(200, 'n'))); }), "");
+}
+
+TEST(OutputPath, UserNamedFileThatIsASideFileOfAnOutputIsRefused) {
+  const ScratchDir dir;
+  const std::string scene = touch(dir, "r.h5.lock");
+  const std::string message = refusal([&] {
+    requireDistinct({{"scene", scene}}, {{"run file", dir.file("r.h5")}});
+  });
+  EXPECT_NE(message.find("the scene is named like the lock file granwave makes beside the run "
+                         "file"),
+            std::string::npos)
+      << message;
+  // The command's own side files, marked derived, are no clash.
+  EXPECT_EQ(refusal([&] {
+              requireDistinct({}, {{"run file", dir.file("r.h5")},
+                                   {"checkpoint", dir.file("r.h5.checkpoint"), true}});
+            }),
+            "");
+}
+
+TEST(OutputPath, OutputDirectoryMustBeADirectoryOrANewName) {
+  const ScratchDir dir;
+  const std::string file = touch(dir, "afile");
+  EXPECT_EQ(refusal([&] { granwave::files::requireOutputDirectory(dir.file("new/deeper"), "-o"); }),
+            "");
+  EXPECT_NE(refusal([&] {
+              granwave::files::requireOutputDirectory(file, "-o");
+            }).find("afile: is a regular file; -o must name a directory"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] {
+              granwave::files::requireOutputDirectory(file + "/runs", "--cache");
+            }).find("afile: is a regular file; --cache"),
+            std::string::npos);
+  EXPECT_NE(refusal([&] {
+              granwave::files::requireOutputDirectory("/dev/null", "--cache");
+            }).find("is a character device"),
+            std::string::npos);
+}

@@ -122,6 +122,10 @@ const InvalidCase kInvalid[] = {
     {"PeriodicZWithDrive",
      "[container]\nperiodic_z = true",
      {"container.periodic_z = true", "drive.frequency = 0"}},
+    // No floor: the energy balance of a box periodic along gravity is meaningless.
+    {"PeriodicAlongGravity",
+     "[container]\nperiodic_x = true\nperiodic_z = true\n[drive]\nfrequency = 0",
+     {"container.periodic_z = true", "run.gravity = 9.81", "no floor"}},
     {"GammaTooLargeForTheContainer",
      "[drive]\ngamma = 40",
      {"drive.gamma = 40.0", "impossible geometry", "container.height - particles.diameter"}},
@@ -131,10 +135,15 @@ const InvalidCase kInvalid[] = {
     {"GammaWithoutGravity",
      "[run]\ngravity = 0",
      {"drive.gamma = 4.0 (default)", "give drive.amplitude"}},
-    {"MoreParticlesThanFit",
-     "[particles]\ncount = 2000",
-     {"particles.count = 2000", "more particles than fit", "hexagonal close packing",
-      "at most 1039"}},
+    // What the placements fit (scene/PlacementCapacity.hpp), not the close-packing bound of
+    // 1039 in this box: random placement jams at 0.547 of the area, the lattice holds 986.
+    {"MoreParticlesThanRandomPlacementReaches",
+     "[particles]\ncount = 627",
+     {"particles.count = 627", "random placement jams at 0.547 of the area", "at most 626",
+      "use initial.placement = \"lattice\" (at most 986)"}},
+    {"MoreParticlesThanTheLatticeHolds",
+     "[particles]\ncount = 987\n[initial]\nplacement = \"lattice\"",
+     {"particles.count = 987", "holds at most 986"}},
     // Bounds that keep every derived quantity a normal double and the run finite
     // (docs/scenes.md, "Why these ranges").
     {"SubnormalGravity", "[run]\ngravity = 5e-324", {"run.gravity = 5e-324", "must be 0 or in"}},
@@ -208,9 +217,12 @@ TEST(SceneValidation, SceneBuiltInCodeIsCheckedWithTheSameRules) {
   }
 }
 
-TEST(SceneValidation, PackingJustBelowTheHexagonalLimitIsAccepted) {
-  // 0.9069 * 0.06^2 / (pi 0.002^2 / 4) = 1039.2 particles.
-  EXPECT_NO_THROW(parseSceneString("[particles]\ncount = 1039\n"));
+TEST(SceneValidation, PackingUpToWhatThePlacementsReachIsAccepted) {
+  // Random: 0.547 * 0.06^2 / (pi 0.002^2 / 4) = 626.8 particles (random sequential adsorption
+  // jams at 0.547, scene/PlacementCapacity.hpp); the resting lattice of the paper's box: 986.
+  EXPECT_NO_THROW(parseSceneString("[particles]\ncount = 626\n"));
+  EXPECT_NO_THROW(
+      parseSceneString("[particles]\ncount = 986\n[initial]\nplacement = \"lattice\"\n"));
 }
 
 }  // namespace

@@ -79,6 +79,36 @@ TEST_F(CommandLine, OtherRefusalsKeepTheParsersOwnMessage) {
   EXPECT_NE(r.err.find("--blocks"), std::string::npos) << r.err;
 }
 
+TEST_F(CommandLine, LongValuesAreEchoedCutShort) {
+  std::ofstream(dir_.path() / "s.toml") << "[contact]\nrestitution = \"dry\"\n";
+  const std::string huge(100000, '7');
+  for (const std::string& args :
+       std::vector<std::string>{"simulate s.toml --set drive.gamma=" + huge + "x",
+                                "simulate s.toml --checkpoint-every " + huge + "x",
+                                "simulate s.toml --fields-blocks " + huge}) {
+    const Result r = run(args);
+    EXPECT_EQ(r.code, 2) << r.err.substr(0, 300);
+    EXPECT_LT(r.err.size(), 600u) << r.err.substr(0, 300);
+    EXPECT_NE(r.err.find("characters"), std::string::npos) << r.err.substr(0, 300);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1);
+  }
+}
+
+TEST_F(CommandLine, RangeErrorsStateTheBoundReadably) {
+  std::ofstream(dir_.path() / "s.toml") << "[contact]\nrestitution = \"dry\"\n";
+  std::ofstream(dir_.path() / "r.h5") << "x";
+  expectOneLine("study s.toml -j -1", "'-1' must be >= 0");
+  expectOneLine("study s.toml --checkpoint-every -1", "'-1' must be >= 0");
+  expectOneLine("simulate s.toml --checkpoint-every 0", "'0' must be > 0");
+  expectOneLine("export r.h5 --every 0", "'0' must be > 0");
+  for (const std::string& args :
+       std::vector<std::string>{"study s.toml -j -1", "simulate s.toml --checkpoint-every 0"})
+    EXPECT_EQ(run(args).err.find("1797"), std::string::npos) << args;
+  // Checked at parse time like every other option: exit 2, not 1.
+  expectOneLine("fields r.h5 --period 7", "'7' is not auto or a whole number in [1, 4]");
+  expectOneLine("fields r.h5 --discard x", "'x' is not auto or a whole number in [0, 1000000]");
+}
+
 // Every option that takes a value shows its default ("=value" or "default: ..." in its text);
 // flags are off unless given.
 TEST_F(CommandLine, EveryHelpEntryThatTakesAValueShowsItsDefault) {

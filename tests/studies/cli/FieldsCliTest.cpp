@@ -1,11 +1,13 @@
 // `granwave fields` end to end: a run file in, a fields file and its XDMF sidecar out; every
 // kind of bad input file gives a one-line error naming the file, a non-zero exit and no output.
 #include <gtest/gtest.h>
+#include <hdf5.h>
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 
@@ -161,9 +163,32 @@ TEST_F(FieldsCli, UndrivenRunIsRejected) {
   expectCleanFailure(run("fields gas.h5 -o f.h5"), "driven");
 }
 
+// A NaN would spread through every average it enters and the file would look fine.
+TEST_F(FieldsCli, RunWithANonFiniteFrameIsRefusedNamingTheFrame) {
+  fs::copy_file(dir_ / "wet.h5", dir_ / "nan.h5", fs::copy_options::overwrite_existing);
+  {
+    const hid_t file = H5Fopen((dir_ / "nan.h5").c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    const hid_t data = H5Dopen2(file, "/particles/all/position/value", H5P_DEFAULT);
+    const hid_t space = H5Dget_space(data);
+    const hsize_t start[3] = {123, 7, 0}, count[3] = {1, 1, 1};
+    H5Sselect_hyperslab(space, H5S_SELECT_SET, start, nullptr, count, nullptr);
+    const hid_t one = H5Screate_simple(3, count, nullptr);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_GE(H5Dwrite(data, H5T_NATIVE_DOUBLE, one, space, H5P_DEFAULT, &nan), 0);
+    H5Sclose(one);
+    H5Sclose(space);
+    H5Dclose(data);
+    H5Fclose(file);
+  }
+  const Result r = run("fields nan.h5 -o f.h5");
+  EXPECT_EQ(r.code, 2) << r.err;
+  expectCleanFailure(r, "nan.h5: frame 123 (t = ");
+}
+
 TEST_F(FieldsCli, BadPeriodOptionIsRejected) {
   const Result r = run("fields wet.h5 -o f.h5 --period 7");
-  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--period"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "f.h5"));
 }

@@ -137,6 +137,23 @@ TEST_F(FileSafetyCli, FifoAndDeviceInputsAreRefusedWithoutBlocking) {
   expectRefusal(run("fields /dev/zero"), "is a character device");
 }
 
+TEST_F(FileSafetyCli, FifoOrDirectoryNamedAsAStudySceneIsSaidToBeOne) {
+  ASSERT_EQ(::mkfifo((dir_ / "pipe").c_str(), 0600), 0);
+  fs::create_directory(dir_ / "sub");
+  std::ifstream tiny(GRANWAVE_SOURCE_DIR "/tests/studies/data/tiny-wave-fronts.toml");
+  std::string text, line;
+  while (std::getline(tiny, line))
+    text += (line.starts_with("dry = ")   ? "dry = \"pipe\""
+             : line.starts_with("wet = ") ? "wet = \"sub\""
+                                          : line) +
+            "\n";
+  write("st.toml", text);
+  expectRefusal(run("study -q st.toml -o out"), "pipe: is a FIFO; an input must be a regular file");
+  write("st.toml", text.replace(text.find("dry = \"pipe\""), 12, "dry = \"s.toml\""));
+  expectRefusal(run("study -q st.toml -o out"), "sub: is a directory; an input must be a regular");
+  EXPECT_FALSE(fs::exists(dir_ / "out"));
+}
+
 TEST_F(FileSafetyCli, NanOptionsAreRefused) {
   expectRefusal(run("simulate -q s.toml --checkpoint-every nan"), "not a finite number");
   expectRefusal(run("study -q s.toml --checkpoint-every nan"), "not a finite number");

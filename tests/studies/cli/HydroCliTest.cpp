@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -93,8 +94,37 @@ TEST_F(HydroCli, CoarseSubsetOfTheParameterMapRunsWithoutNumericalFailure) {
 
 TEST_F(HydroCli, UndrivenSceneIsRejectedAndNothingWritten) {
   const Result r = run("[drive]\nfrequency = 0\n", "-o h.h5");
-  EXPECT_NE(r.code, 0);
+  EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("driven"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "h.h5"));
+  // A plate at rest (Gamma = 0) has no front to find: no "front" of 1e-31 m/s at T = inf.
+  const Result still = run("", "-o h.h5 --set drive.gamma=0");
+  EXPECT_EQ(still.code, 2) << still.err;
+  EXPECT_NE(still.err.find("drive.gamma or drive.amplitude > 0"), std::string::npos) << still.err;
+  EXPECT_EQ(still.out, "");
+  EXPECT_FALSE(fs::exists(dir_ / "h.h5"));
+}
+
+// The solver's step is at most half a phase, which forces 2 M steps a cycle: with M = 6000
+// phases that alone was past the old budget of 10000 steps a cycle ("no progress").
+TEST_F(HydroCli, FinePhaseResolutionRunsWithinTheStepBudget) {
+  const Result r =
+      run("[hydro]\ncells = 20\n[run]\nphases_per_cycle = 6000\nduration = 0.8\n", "-o h.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("periodic state  reached"), std::string::npos) << r.out;
+}
+
+// Walton's law with e_t0 = -1 makes every contact smooth: the rough continuum's rotational
+// temperature has no source. The scene is refused naming both keys and the equivalent choice.
+TEST_F(HydroCli, RoughParticlesWithSmoothContactsAreRefusedNamingTheKeys) {
+  const Result r =
+      run("", "-o h.h5 --set contact.tangential_limit=-1 --set hydro.particles=\"rough\"");
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("contact.tangential_limit > -1 for hydro.particles = \"rough\""),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("use hydro.particles = \"smooth\""), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "h.h5"));
 }
 

@@ -59,9 +59,21 @@ std::string labelOf(const fs::path& record) {
   return "";
 }
 
+// The rerun redid exactly the run labelled `label` and reused the others.
+void expectOnlyRunRedone(const Result& r, int runs, const std::string& label) {
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto p = progress(r.err);
+  ASSERT_TRUE(p) << r.err;
+  EXPECT_EQ(p->runs, runs);
+  EXPECT_EQ(p->reused, runs - 1) << r.err;
+  EXPECT_EQ(p->to_do, 1) << r.err;
+  EXPECT_NE(r.err.find("[  1/1] " + label), std::string::npos) << r.err;
+}
+
 }  // namespace
 
-TEST_F(StudyCli, TinyStudyWritesResultsAndReportThenRerunReusesEveryRunAndRedoesOnlyDeletedOne) {
+TEST_F(StudyCli,
+       TinyStudyWritesResultsAndReportThenRerunReusesEveryRunAndRedoesOnlyDeletedOrDamagedOne) {
   const std::string command = "study " + kTinyStudy + " -o out -j 2";
   const fs::path results = dir_ / "out" / "results.h5";
 
@@ -109,17 +121,22 @@ TEST_F(StudyCli, TinyStudyWritesResultsAndReportThenRerunReusesEveryRunAndRedoes
   fs::remove(*deleted);
   const Result third = run(command);
   if (binaryRebuilt()) GTEST_SKIP() << kRebuilt;
-  ASSERT_EQ(third.code, 0) << third.err;
-  const auto p3 = progress(third.err);
-  ASSERT_TRUE(p3) << third.err;
-  EXPECT_EQ(p3->runs, p2->runs);
-  EXPECT_EQ(p3->reused, p2->runs - 1) << third.err;
-  EXPECT_EQ(p3->to_do, 1) << third.err;
-  EXPECT_NE(third.err.find("[  1/1] ED dry N=150"), std::string::npos) << third.err;
+  expectOnlyRunRedone(third, p2->runs, "ED dry N=150");
   ASSERT_TRUE(fs::exists(*deleted));
   EXPECT_EQ(records("out"), done);
   EXPECT_NE(slurp(*deleted).find("ok = true"), std::string::npos) << slurp(*deleted);
   EXPECT_NE(text.find("ok = true"), std::string::npos) << text;
+  expectSameNumbers(someResults(results), numbers);
+
+  // A run file damaged after its record was written (cut in half) is made again, not read.
+  const fs::path cut = fs::path(*deleted).replace_extension(".h5");
+  fs::resize_file(cut, fs::file_size(cut) / 2);
+  const Result fourth = run(command);
+  if (binaryRebuilt()) GTEST_SKIP() << kRebuilt;
+  expectOnlyRunRedone(fourth, p2->runs, "ED dry N=150");
+  EXPECT_NE(fourth.err.find(cut.filename().string() + " cannot be read; making that run again"),
+            std::string::npos)
+      << fourth.err;
   expectSameNumbers(someResults(results), numbers);
 }
 
