@@ -10,6 +10,7 @@
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
 #include "coarse_grain/StatePhaseAverager.hpp"
+#include "coarse_grain/SurfaceWaveSpectrum.hpp"
 #include "coarse_grain/WaveFront.hpp"
 
 namespace granwave {
@@ -34,7 +35,8 @@ struct FieldsAnalysis {
   std::vector<PhaseFields> per_block;
   std::vector<double> front_height, front_peak;  // [phase]
   std::vector<FrontEpisode> fronts;
-  PatternResult patterns;  // filled by the caller from a PatternSampler (may be unavailable)
+  PatternResult patterns;       // filled by the caller from a PatternSampler (may be unavailable)
+  SurfaceWaveAnalysis surface;  // filled by the caller from a SurfaceRecorder (may be unavailable)
   // Conditioned on the layer's state (StatePhaseAverager): windows of 12 cycles counted in
   // each state (-1: not measured), and the fields of each state that has at least as many
   // windows as blocks (state_period 1 or 2; 0 in the whole-run analysis).

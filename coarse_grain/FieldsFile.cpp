@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "coarse_grain/SurfaceWavesFile.hpp"
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
 
@@ -120,13 +121,14 @@ void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
   if (pd.f2_strength.empty()) return;
   const std::string g = "/period_doubling";
   f.createGroup(g);
-  f.writeDataset(g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()});
-  f.writeDataset(g + "/noise_strength", pd.noise_strength, {pd.noise_strength.size()});
-  f.writeDataset(g + "/threshold", pd.threshold, {pd.threshold.size()});
+  put(f, g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()}, "1");
+  put(f, g + "/noise_strength", pd.noise_strength, {pd.noise_strength.size()}, "1");
+  put(f, g + "/threshold", pd.threshold, {pd.threshold.size()}, "1");
   std::vector<std::int64_t> episodes;
   for (const StateEpisode& e : pd.episodes)
     episodes.insert(episodes.end(), {e.first_cycle, e.cycles, e.period});
   f.writeDataset(g + "/episodes", episodes, {pd.episodes.size(), 3});
+  f.writeStringAttribute(g + "/episodes", "unit", "1");  // cycles, cycles, period (counts)
   f.writeAttribute<std::int64_t>(g, "window_cycles", pd.window_cycles);
   f.writeAttribute<std::int64_t>(g, "first_cycle", pd.first_cycle);
   f.writeAttribute<double>(g, "period2_share", pd.period2_share);
@@ -260,8 +262,8 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
     const std::string grp = fmt::format("/xdmf/p{:04d}", ph);
     f.createGroup(grp);
     const int k = static_cast<int>(ph);
-    f.writeDataset(grp + "/area_fraction", slab(p, p.area_fraction, k), {Z, 1, X});
-    f.writeDataset(grp + "/temperature", slab(p, p.temperature, k), {Z, 1, X});
+    put(f, grp + "/area_fraction", slab(p, p.area_fraction, k), {Z, 1, X}, "1");
+    put(f, grp + "/temperature", slab(p, p.temperature, k), {Z, 1, X}, "J");
     std::vector<double> v(Z * X * 3, 0.0);
     const auto vx = slab(p, p.velocity_x, k), vz = slab(p, p.velocity_z, k);
     // ParaView's axes: (z, y, x) order of the slab; vector components (x, y, z).
@@ -269,10 +271,11 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
       v[3 * c] = vx[c];
       v[3 * c + 2] = vz[c];
     }
-    f.writeDataset(grp + "/velocity", v, {Z, 1, X, 3});
+    put(f, grp + "/velocity", v, {Z, 1, X, 3}, "m s-1");
   }
 
   writePatterns(f, a.patterns);
+  writeSurfaceWaves(f, a.surface);
   writePeriodDoubling(f, a.context.period_doubling);
 
   f.createGroup("/parameters");

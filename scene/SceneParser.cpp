@@ -13,6 +13,7 @@
 #include <sstream>
 #include <utility>
 
+#include "scene/NameSuggestion.hpp"
 #include "scene/SceneDetail.hpp"
 #include "scene/SceneEntry.hpp"
 
@@ -208,32 +209,6 @@ const Field* findField(std::string_view section, std::string_view name) {
 bool isSection(std::string_view name) {
   return std::any_of(std::begin(kFields), std::end(kFields),
                      [name](const Field& f) { return f.section == name; });
-}
-
-std::size_t editDistance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t substitute = diagonal + (a[i - 1] == b[j - 1] ? 0 : 1);
-      diagonal = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, substitute});
-    }
-  }
-  return row[b.size()];
-}
-
-// " (did you mean 'drive.gamma'?)" for the closest candidate within edit distance 3, or "".
-std::string didYouMean(std::string_view word, const std::vector<std::string>& candidates) {
-  const std::string* best = nullptr;
-  std::size_t bestDistance = 4;
-  for (const auto& c : candidates) {
-    const std::size_t d = editDistance(word, c);
-    if (d < bestDistance) best = &c, bestDistance = d;
-  }
-  return best ? fmt::format(" (did you mean '{}'?)", *best) : "";
 }
 
 std::vector<std::string> sectionNames() {

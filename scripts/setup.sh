@@ -11,8 +11,11 @@ packages=(build-essential cmake pkg-config
           libeigen3-dev libsundials-dev libfftw3-dev libhdf5-dev hdf5-tools
           libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev libfmt-dev
           python3-matplotlib python3-h5py python3-numpy chromium libopenmpi-dev openmpi-bin
-          git clang-format python3-clang-14
-          paraview python3-paraview python3-mdanalysis python3-ase)
+          git clang-format python3-clang-14)
+# Used only by the tests, never by the program: the field's readers that open granwave's files
+# (docs/commands.md, "Viewers") and YAML for the citation file's check.
+test_packages=(paraview python3-paraview python3-mdanalysis python3-ase python3-gsd python3-yaml)
+packages+=("${test_packages[@]}")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,8 +1,9 @@
 #pragma once
-// `granwave export RUN.h5 [-o OUT] [--format extxyz] [--every K]`: the trajectory of a run file
-// in a format the field's viewers and analysis tools read (docs/commands.md, "Viewers"). The
-// run file itself is H5MD in SI units, which MDAnalysis's H5MD reader does not accept (it knows
-// nm, Angstrom, pm and fm only); extended XYZ is read by ASE and OVITO.
+// `granwave export RUN.h5 [-o OUT] [--format F] [--every K]`: the trajectory of a run file in
+// a format the field's viewers and analysis tools read (docs/commands.md, "Viewers"): extended
+// XYZ (ASE, OVITO), GSD (HOOMD-blue, OVITO, MDAnalysis), LAMMPS dump (LAMMPS, OVITO, ASE,
+// MDAnalysis) and H5MD in nm (MDAnalysis, whose H5MD reader refuses the run file's metres).
+// The writers and their layouts are in exports/.
 #include <string>
 
 namespace CLI {
@@ -13,9 +14,9 @@ namespace granwave {
 
 struct ExportOptions {
   std::string run_path;
-  std::string output;  // default: <run>.extxyz beside the run file's stem
-  std::string format = "extxyz";
-  int every = 1;  // every K-th frame
+  std::string output;  // default: <run stem> with the format's extension
+  std::string format;  // empty: from the output's extension, else extxyz
+  int every = 1;       // every K-th frame
 };
 
 void addExportCommand(CLI::App& app, ExportOptions& options);

@@ -41,15 +41,19 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
       ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Fields file (HDF5 + .xdmf); default <run>.fields.h5");
   cmd->add_option(
-      "--period", opt.period,
-      "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4");
+         "--period", opt.period,
+         "Cycles per phase window: auto (the layer's period, from its centre of mass) or 1-4")
+      ->capture_default_str();
   cmd->add_option("--blocks", opt.blocks, "Independent blocks of cycles for uncertainties")
-      ->check(CLI::Range(2, 50));
-  cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number");
+      ->check(CLI::Range(2, 50))
+      ->capture_default_str();
+  cmd->add_option("--discard", opt.discard, "Transient cycles to discard: auto or a number")
+      ->capture_default_str();
   cmd->add_option("--front-threshold", opt.front_threshold,
                   "T~_g/T0 above which a temperature peak is a front (paper: 0.5)")
       ->check(CLI::Range(0.01, 100.0))
-      ->check(finiteNumber());
+      ->check(finiteNumber())
+      ->capture_default_str();
   cmd->add_flag("--state-fields", opt.state_fields,
                 "Also average the fields over the period-1 and the period-2 windows of the "
                 "layer separately (/states; about twice the memory)");
@@ -103,11 +107,13 @@ int runFields(const FieldsOptions& opt) {
   std::optional<StatePhaseAverager> states;
   if (opt.state_fields) states.emplace(cfg);
   PatternSampler patterns({M});
+  SurfaceRecorder surface(surfaceRecorderConfig(scene));
   for (std::size_t i = 0; i < run.frameCount(); ++i) {
     const Snapshot s = run.frame(i);
     averager.observe(s);
     if (states) states->observe(s);
     patterns.observe(s);
+    surface.observe(s);
   }
 
   FrontOptions fronts;
@@ -118,6 +124,7 @@ int runFields(const FieldsOptions& opt) {
   if (states) addStateFields(a, *states);
   a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
                                 scene.particles.diameter, scene.container.periodic_x);
+  a.surface = surfaceWaves(surface, averager);
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
   if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);

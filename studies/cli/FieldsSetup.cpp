@@ -25,6 +25,19 @@ PhaseAveragerConfig phaseAveragerConfig(const Scene& s, int P, int blocks, int f
   return c;
 }
 
+SurfaceRecorderConfig surfaceRecorderConfig(const Scene& s) {
+  SurfaceRecorderConfig c;
+  c.records_per_cycle = s.run.phases_per_cycle;
+  c.width = s.container.width;
+  c.diameter = s.particles.diameter;
+  c.periodic_x = s.container.periodic_x;
+  return c;
+}
+
+SurfaceWaveAnalysis surfaceWaves(const SurfaceRecorder& recorder, const PhaseAverager& averager) {
+  return analyseSurfaceWaves(recorder.series(std::max(0, averager.firstPooledCycle())));
+}
+
 FieldsContext fieldsContext(const Scene& s, const std::string& source,
                             const std::string& scene_toml, int layer_period) {
   const SceneDerived dv = derive(s);
@@ -94,6 +107,16 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
         toString(w.state), 100 * std::max({w.crystal_share, w.amorphous_share, w.liquid_share}),
         w.cycles, 100 * w.crystal_share, 100 * w.amorphous_share, 100 * w.liquid_share,
         w.compact_phase, w.coordination, w.psi6, w.lid_row, 100 * w.lid_row_cycles);
+  }
+  if (a.surface.available) {
+    const SurfaceWaveAnalysis& s = a.surface;
+    r += fmt::format(
+        "surface spectrum over {} windows of {} cycles: f/2 wave in {:.0f} % of them; standing "
+        "mode {} (lambda {:.1f} +- {:.1f} d), amplitude {:.2f} +- {:.2f} d (noise {:.2f} d), "
+        "subharmonic share {:.2f} +- {:.2f}\n",
+        s.windows.size(), s.window_cycles, 100 * s.wave_fraction, s.standing_mode, s.wavelength_d,
+        s.wavelength_error_d, s.amplitude_d, s.amplitude_error_d, s.noise_d, s.subharmonic_share,
+        s.subharmonic_share_error);
   }
   for (const FrontEpisode& e : a.fronts) {
     if (!e.from_impact) continue;

@@ -216,7 +216,9 @@ void addHydroCommand(CLI::App& app, HydroOptions& opt) {
       ->required()
       ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Output file (HDF5); default <scene>.hydro.h5");
-  cmd->add_option("--set", opt.overrides, "Override a scene key: section.key=value")->take_all();
+  cmd->add_option("--set", opt.overrides,
+                  "Override a scene key: section.key=value (repeatable; default: none)")
+      ->take_all();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress output");
 }
 

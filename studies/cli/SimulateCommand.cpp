@@ -115,6 +115,8 @@ class SimulationRun {
           std::make_unique<PatternSampler>(PatternSamplerConfig{scene_.run.phases_per_cycle});
       accumulating_.emplace_back("phase_averager", averager_.get());
       accumulating_.emplace_back("patterns", patterns_.get());
+      surface_ = std::make_unique<SurfaceRecorder>(surfaceRecorderConfig(scene_));
+      accumulating_.emplace_back("surface", surface_.get());
       impacts_ = std::make_unique<PooledPairImpacts>(*averager_, scene_.drive.frequency);
       accumulating_.emplace_back("pair_impacts", &impacts_->histogram);
     }
@@ -156,6 +158,7 @@ class SimulationRun {
     if (averager_) {
       sim_->addObserver(averager_.get());
       sim_->addObserver(patterns_.get());
+      sim_->addObserver(surface_.get());
       sim_->addObserver(impacts_.get());  // after the averager: its first pooled cycle
       sim_->setPairImpactObserver(&impacts_->histogram);
     }
@@ -336,6 +339,7 @@ class SimulationRun {
     if (states_) addStateFields(a, *states_);
     a.patterns = classifyPatterns(*patterns_, scene_.container.width, scene_.container.height,
                                   scene_.particles.diameter, scene_.container.periodic_x);
+    a.surface = surfaceWaves(*surface_, *averager_);
     return a;
   }
 
@@ -347,6 +351,7 @@ class SimulationRun {
   CenterOfMassSeries com_;
   std::unique_ptr<PhaseAverager> averager_;
   std::unique_ptr<PatternSampler> patterns_;
+  std::unique_ptr<SurfaceRecorder> surface_;
   std::unique_ptr<StatePhaseAverager> states_;
   std::unique_ptr<PooledPairImpacts> impacts_;
   NamedCheckpointables accumulating_{{"center_of_mass", &com_}};
@@ -372,23 +377,27 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
       ->required()
       ->check(regularInputFile());
   cmd->add_option("-o,--output", opt.output, "Output run file (H5MD); default <scene>.h5");
-  cmd->add_option("--set", opt.overrides, "Override a scene key: section.key=value")
+  cmd->add_option("--set", opt.overrides,
+                  "Override a scene key: section.key=value (repeatable; default: none)")
       ->take_all()
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress line on stderr");
   cmd->add_flag("--no-output", opt.no_output, "Do not write a run file (summary only)");
   cmd->add_option("--fields", opt.fields,
-                  "Also write phase-averaged fields, computed live (HDF5 + .xdmf)");
+                  "Also write phase-averaged fields, computed live (HDF5 + .xdmf; default: "
+                  "none)");
   cmd->add_option("--fields-period", opt.fields_period, "Cycles per phase window for --fields")
-      ->check(CLI::Range(1, 4));
+      ->check(CLI::Range(1, 4))
+      ->capture_default_str();
   cmd->add_option("--fields-blocks", opt.fields_blocks, "Blocks of cycles for --fields")
-      ->check(CLI::Range(2, 50));
+      ->check(CLI::Range(2, 50))
+      ->capture_default_str();
   cmd->add_flag("--state-fields", opt.state_fields,
                 "With --fields: also average the fields over the period-1 and the period-2 "
                 "windows of the layer separately (/states; about twice the memory)");
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Save a checkpoint every this many seconds of wall time (and on Ctrl-C); "
-                  "the same command then continues a killed run from it")
+                  "the same command then continues a killed run from it (default: none)")
       ->check(CLI::PositiveNumber)
       ->check(finiteNumber());
 }

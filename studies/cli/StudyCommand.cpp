@@ -11,6 +11,7 @@
 
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
+#include "studies/cli/FollowUpProgress.hpp"
 #include "studies/cli/OptionChecks.hpp"
 #include "studies/cli/StudyKinds.hpp"
 #include "studies/cli/Version.hpp"
@@ -177,9 +178,11 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   requireFinished(runs, cache_dir);
   // Follow-up rounds (more seeds for an undecided verdict) run on this rank: the worker ranks
   // have left their loop with the first round. Finished runs come from the cache.
-  for (std::vector<RunRequest> more = study->followUp(runs); !more.empty();
-       more = study->followUp(runs)) {
-    plan.insert(plan.end(), more.begin(), more.end());
+  int round = 1;
+  for (FollowUp more = study->followUp(runs); !more.runs.empty(); more = study->followUp(runs)) {
+    if (!opt.quiet)
+      fmt::print(stderr, "granwave study: {}\n", followUpLine(++round, more, runs, jobs));
+    plan.insert(plan.end(), more.runs.begin(), more.runs.end());
     runs = RunSet(runAll(plan, cache, scheduling, nullptr));
     requireFinished(runs, cache_dir);
   }

@@ -5,6 +5,7 @@
 #include "studies/readings/ReadingsStudy.hpp"
 #include "studies/sound_speed/SoundSpeedStudy.hpp"
 #include "studies/stability/StabilityStudy.hpp"
+#include "studies/surface_waves/SurfaceWavesStudy.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -17,9 +18,10 @@ std::unique_ptr<Study> makeStudy(StudyFile& file) {
   if (kind == "stability") return makeStabilityStudy(file);
   if (kind == "momentum-transfer") return makeMomentumTransferStudy(file);
   if (kind == "readings") return makeReadingsStudy(file);
+  if (kind == "surface-waves") return makeSurfaceWavesStudy(file);
   file.fail("study", "kind",
             "unknown study kind; valid kinds: wave-fronts, sound-speed, effective-restitution, "
-            "momentum-transfer, stability, readings");
+            "momentum-transfer, stability, readings, surface-waves");
 }
 
 }  // namespace granwave

@@ -13,6 +13,7 @@
 #include "particles/EventLoopStall.hpp"
 #include "particles/InelasticCollapse.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/cli/CommandLineHints.hpp"
 #include "studies/cli/ExportCommand.hpp"
 #include "studies/cli/FieldsCommand.hpp"
 #include "studies/cli/HydroCommand.hpp"
@@ -52,7 +53,7 @@ int main(int argc, char** argv) {
   granwave::MpiSession mpi(argc, argv);
   CLI::App app{
       "granwave: event-driven simulation and continuum comparison of vibrated granular layers"};
-  app.set_version_flag("--version", std::string("granwave ") + granwave::kVersion);
+  app.set_version_flag("--version", granwave::versionLine);
   app.require_subcommand(1);
   granwave::SimulateOptions simulate;
   granwave::addSimulateCommand(app, simulate);
@@ -69,7 +70,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     // One line and the documented code for a bad command line (CLI11's own codes are 100+).
-    printError(std::string(e.what()) + " (see granwave --help)");
+    const std::string hint = granwave::misspeltWordMessage(app, {argv + 1, argv + argc});
+    printError(hint.empty() ? std::string(e.what()) + " (see granwave --help)" : hint);
     return granwave::kExitInvalidInput;
   }
 

@@ -37,7 +37,13 @@ std::string installedFile(const std::string& relative) {
   const RunningExecutable exe = runningExecutable();
   const std::filesystem::path bin =
       exe.path.empty() ? std::filesystem::path(".") : exe.path.parent_path();
-  return (bin.parent_path() / "share" / "granwave" / relative).lexically_normal().string();
+  // Installed: GNUInstallDirs' DATADIR/granwave as seen from BINDIR (compiled in, relative).
+  // In the build tree: build/share/granwave beside build/studies/granwave. The two are the
+  // same directory in the default layout.
+  std::filesystem::path share = (bin / GRANWAVE_SHARE_FROM_BIN).lexically_normal();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(share, ec)) share = bin.parent_path() / "share" / "granwave";
+  return (share / relative).lexically_normal().string();
 }
 
 SourceCommit sourceCommit() {

@@ -1,10 +1,10 @@
 #pragma once
 // The files the program ships beside itself (docs/commands.md, "Install"): the report renderer,
-// the LAMMPS deck, the source commit it was built from. They are found relative to the running
-// executable, <dir of granwave>/../share/granwave/<relative>, both in an installed prefix
-// (P/bin/granwave, P/share/granwave/) and in the build tree (build/studies/granwave,
-// build/share/granwave/, copied there at configure time), so no absolute source or build path
-// is compiled in and an installed prefix can be moved.
+// the LAMMPS deck, the study files and scenes, the source commit it was built from. They are
+// found relative to the running executable: in an installed prefix at the path from BINDIR to
+// DATADIR/granwave (P/bin/granwave, P/share/granwave/ by default), in the build tree at
+// build/share/granwave/ beside build/studies/granwave (copied there at configure time). No
+// absolute source or build path is compiled in, so an installed prefix can be moved.
 #include <string>
 
 namespace granwave {

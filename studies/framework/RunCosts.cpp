@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "studies/framework/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 
@@ -51,9 +52,10 @@ void writeRunCosts(const RunSet& runs, h5::File& f, Report& report) {
   f.writeStringArrayAttribute("/runs", "label", labels);
   f.writeStringArrayAttribute("/runs", "method", kinds);
   f.writeStringArrayAttribute("/runs", "status", status);
-  f.writeDataset("/runs/wall_seconds", wall, {wall.size()});
-  f.writeDataset("/runs/cpu_seconds", cpu, {cpu.size()});
-  f.writeDataset("/runs/work", work, {work.size()});
+  putSeries(f, "/runs/wall_seconds", wall, "s");
+  putSeries(f, "/runs/cpu_seconds", cpu, "s");
+  // Events (particles), CVODE steps (hydro) or time steps (LAMMPS): counts.
+  putSeries(f, "/runs/work", work, "1");
   ReportSection& s = report.section("Runs and cost");
   s.add(std::move(t));
 }

@@ -27,15 +27,24 @@ class RunSet {
   std::map<std::string, std::size_t> index_;
 };
 
+// A round of runs a study adds once the earlier ones are known, with why, and the most that
+// may still follow it, so that the progress can say both.
+struct FollowUp {
+  std::vector<RunRequest> runs;  // empty: nothing more is needed
+  std::string reason;            // "the dry law's simplest-model verdict is undecided over 5 seeds"
+  int rounds_after = 0;          // rounds that may follow this one, at most
+  std::size_t runs_after = 0;    // runs those rounds may add, at most
+};
+
 class Study {
  public:
   virtual ~Study() = default;
   virtual std::string title() const = 0;
   virtual std::vector<RunRequest> plan() const = 0;
-  // Runs to add once `runs` (the plan and every earlier follow-up, finished) are known: a
-  // study whose verdict is not yet decided asks for more seeds here, up to its cap. Empty when
-  // nothing more is needed; the default asks for nothing.
-  virtual std::vector<RunRequest> followUp(const RunSet& /*runs*/) const { return {}; }
+  // The runs to add once `runs` (the plan and every earlier follow-up, finished) are known: a
+  // study whose verdict is not yet decided asks for more seeds here, up to its cap. No runs
+  // when nothing more is needed; the default asks for nothing.
+  virtual FollowUp followUp(const RunSet& /*runs*/) const { return {}; }
   // Writes the measured numbers under /results of `results` and fills `report`.
   virtual void analyse(const RunSet& runs, h5::File& results, Report& report) const = 0;
 };

@@ -7,6 +7,9 @@
 #include <limits>
 #include <sstream>
 
+#include "scene/NameSuggestion.hpp"
+#include "studies/framework/InstalledFiles.hpp"
+
 namespace granwave {
 
 StudyFile StudyFile::load(const std::string& path) {
@@ -131,12 +134,17 @@ std::vector<std::string> StudyFile::strings(std::string_view section, std::strin
 
 std::string StudyFile::scenePath(std::string_view section, std::string_view key,
                                  std::string fallback) {
-  std::string p = string(section, key, std::move(fallback));
-  std::filesystem::path path(p);
-  if (path.is_relative()) path = std::filesystem::path(path_).parent_path() / path;
-  if (!std::filesystem::is_regular_file(path))
-    fail(section, key, fmt::format("file {} does not exist", path.string()));
-  return path.lexically_normal().string();
+  const std::filesystem::path given(string(section, key, std::move(fallback)));
+  std::vector<std::filesystem::path> places{given};
+  if (given.is_relative())
+    places = {std::filesystem::path(path_).parent_path() / given,
+              std::filesystem::path(installedFile("studies")) / given};
+  std::string looked;
+  for (const std::filesystem::path& place : places) {
+    if (std::filesystem::is_regular_file(place)) return place.lexically_normal().string();
+    looked += (looked.empty() ? "" : " and ") + place.lexically_normal().string();
+  }
+  fail(section, key, fmt::format("no such file (looked in {})", looked));
 }
 
 void StudyFile::rejectUnknownKeys() const {
@@ -151,13 +159,15 @@ void StudyFile::rejectUnknownKeys() const {
     const std::string section(name.str());
     const toml::table* t = node.as_table();
     if (!t || !known_.count(section))
-      throw StudyError(fmt::format("{}: unknown section [{}] for a {} study; valid sections: {}",
-                                   path_, section, kind_, list(sections)));
+      throw StudyError(fmt::format(
+          "{}: unknown section [{}]{} for a {} study; valid sections: {}", path_, section,
+          didYouMean(section, {sections.begin(), sections.end()}), kind_, list(sections)));
     const auto& keys = known_.at(section);
     for (const auto& [key, value] : *t) {
       if (!keys.count(std::string(key.str())))
-        throw StudyError(fmt::format("{}: unknown key '{}.{}'; valid keys in [{}]: {}", path_,
-                                     section, key.str(), section, list(keys)));
+        throw StudyError(fmt::format(
+            "{}: unknown key '{}.{}'{}; valid keys in [{}]: {}", path_, section, key.str(),
+            didYouMean(key.str(), {keys.begin(), keys.end()}), section, list(keys)));
     }
   }
 }

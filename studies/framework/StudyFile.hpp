@@ -37,7 +37,10 @@ class StudyFile {
                             std::vector<int> fallback);
   std::vector<std::string> strings(std::string_view section, std::string_view key,
                                    std::vector<std::string> fallback);
-  // A scene file named relative to the study file; it must exist.
+  // A scene (or other input) file the study file names: an absolute path, or a path relative
+  // to the study file's directory, else relative to the study files installed with the
+  // program (share/granwave/studies, so "../scenes/paper-dry.toml" reaches the shipped
+  // scenes from a study file copied anywhere). StudyError listing both places if neither has it.
   std::string scenePath(std::string_view section, std::string_view key, std::string fallback);
 
   // Throws StudyError naming the first key or section that no read asked for.

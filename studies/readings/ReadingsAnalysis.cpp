@@ -295,6 +295,7 @@ void writeReadingsResults(h5::File& f, const ReadingsConfig& c, const ReadingsRe
   putSeries(f, root + "/statements_held", holds, "count");
   f.writeDataset(root + "/verdicts", verdicts, {r.readings.size(), std::size_t{kStatements}});
   f.writeStringAttribute(root + "/verdicts", "codes", "0 holds, 1 fails, 2 undecided, 3 no data");
+  f.writeStringAttribute(root + "/verdicts", "unit", "1");
   for (std::size_t i = 0; i < r.readings.size(); ++i) {
     const ReadingOutcome& o = r.readings[i];
     const std::string g = fmt::format("{}/reading_{}", root, i);

@@ -78,6 +78,7 @@ void writeSolver(h5::File& f, const HydroRunContent& c) {
 void writeHydroRunFile(const std::string& path, const HydroRunContent& c) {
   h5::AtomicFile af(path);
   h5::File& f = af.file();
+  f.writeStringAttribute("/", "format", kHydroRunFormat);
   writeFields(f, c);
   writeFronts(f, c.fronts);
   writeSolver(f, c);

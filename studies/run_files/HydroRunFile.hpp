@@ -30,6 +30,9 @@ struct HydroRunContent {
   std::string scene_toml;  // the fully resolved scene
 };
 
+// The file's root attribute "format": its name and layout version.
+inline constexpr const char* kHydroRunFormat = "granwave-hydro-1";
+
 // Atomic: the file appears complete or not at all.
 void writeHydroRunFile(const std::string& path, const HydroRunContent& content);
 

@@ -224,6 +224,14 @@ StabilityResults analyseStability(const StabilityConfig& c, const RunSet& runs) 
   r.period_differences = r.grid.periodDifferencesPerFrequency();
   r.features = checkPaperFeatures(r.grid);
   r.gallery = gallery(c, runs, r.grid);
+  for (int law = 0; law < kLaws; ++law)
+    for (double fr : c.frequencies)
+      for (double gamma : c.gammas) {
+        std::vector<const RunRecord*> records;
+        for (int seed : seedsAt(c, runs, fr, gamma))
+          records.push_back(&runs.get(StabilityConfig::particleRun(law, fr, gamma, seed)));
+        r.spectrum[law].push_back(spectrumWave(records));
+      }
   return r;
 }
 
@@ -238,9 +246,19 @@ void writeStabilityResults(h5::File& f, const StabilityConfig& c, const Stabilit
   putSeries(f, kRoot + "/differences_per_frequency_within_cycle", r.symbol_differences_within_cycle,
             "1");
   putSeries(f, kRoot + "/period_differences_per_frequency", r.period_differences, "1");
-  for (int law = 0; law < kLaws; ++law)
-    writeLaw(f, fmt::format("{}/{}", kRoot, kLawNames[law]), r.grid.verdicts[law], r.hydro[law],
-             r.hydro_rough[law]);
+  for (int law = 0; law < kLaws; ++law) {
+    const std::string grp = fmt::format("{}/{}", kRoot, kLawNames[law]);
+    writeLaw(f, grp, r.grid.verdicts[law], r.hydro[law], r.hydro_rough[law]);
+    std::vector<double> share, amplitude, wavelength;
+    for (const SpectrumWave& s : r.spectrum[law]) {
+      share.push_back(s.measured() ? s.wave_fraction : NAN);
+      amplitude.push_back(s.measured() ? s.amplitude_d : NAN);
+      wavelength.push_back(s.measured() ? s.wavelength_d : NAN);
+    }
+    putSeries(f, grp + "/surface_wave_spectrum_share", share, "1");
+    putSeries(f, grp + "/surface_wave_spectrum_amplitude", amplitude, "d");
+    putSeries(f, grp + "/surface_wave_spectrum_wavelength", wavelength, "d");
+  }
   const std::string features = kRoot + "/features";
   f.createGroup(features);
   for (const FeatureCheck& check : r.features)

@@ -11,6 +11,7 @@
 #include "studies/run_files/RunOutputs.hpp"
 #include "studies/stability/DifferenceBootstrap.hpp"
 #include "studies/stability/SeedBootstrap.hpp"
+#include "studies/stability/SpectrumWaves.hpp"
 #include "studies/stability/StabilityFeatures.hpp"
 #include "studies/stability/StabilityGrid.hpp"
 #include "studies/stability/StabilityStudy.hpp"
@@ -50,6 +51,8 @@ struct StabilityResults {
   int max_seeds = 0;
   std::vector<DifferenceCounts> difference_counts;  // the counts per f over seed resamples
   std::vector<GallerySnapshot> gallery;             // by state, then law, f, Gamma
+  // The surface waves from the spectrum, beside the detector's: [law][i_f * gammas + j_gamma].
+  std::vector<SpectrumWave> spectrum[2];
 };
 
 // The seeds run at a point: the study's, then any added where its seeds disagreed.

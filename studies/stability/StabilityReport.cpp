@@ -141,15 +141,20 @@ Table everyPoint(const StabilityConfig& c, const StabilityResults& r) {
       "next, reported) over the classified seeds; the state within one cycle with the mean "
       "neighbour count and <|psi6|> at each cycle's most compact phase, and the particles "
       "pressed against the lid (within 0.1 d) at the fullest phase of a cycle; how many seeds "
-      "show surface waves or kinks. Hydro: one run per point (the continuum has no seed).";
-  t.columns = {"f (Hz)",    "Gamma",     "dry (particles)", "wet (particles)",
-               "hydro dry", "hydro wet", "hydro rough dry", "hydro rough wet"};
+      "show surface waves or kinks (the detector the diagrams draw). Beside it the surface "
+      "waves from the space-time spectrum of the surface (windows of 10 cycles pooled over "
+      "the seeds; docs/classification.md). Hydro: one run per point (the continuum has no "
+      "seed).";
+  t.columns = {
+      "f (Hz)",           "Gamma",     "dry (particles)", "wet (particles)", "dry f/2 spectrum",
+      "wet f/2 spectrum", "hydro dry", "hydro wet",       "hydro rough dry", "hydro rough wet"};
   const std::size_t NG = c.gammas.size();
   for (std::size_t i = 0; i < c.frequencies.size(); ++i)
     for (std::size_t j = 0; j < NG; ++j) {
       const std::size_t k = i * NG + j;
       t.rows.push_back({formatCompact(c.frequencies[i]), formatCompact(c.gammas[j]),
                         describe(r.grid.at(0, i, j)), describe(r.grid.at(1, i, j)),
+                        describe(r.spectrum[0][k]), describe(r.spectrum[1][k]),
                         describe(r.hydro[0][k]), describe(r.hydro[1][k]),
                         describe(r.hydro_rough[0][k]), describe(r.hydro_rough[1][k])});
     }

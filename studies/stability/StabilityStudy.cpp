@@ -1,6 +1,7 @@
 #include "studies/stability/StabilityStudy.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <set>
@@ -96,21 +97,33 @@ StabilityStudy::StabilityStudy(StudyFile& f) {
 // More seeds where they can change a verdict: while a feature is undecided, at every point
 // whose seeds disagree (a point whose seeds agree is the same in every resample), seed_step
 // seeds of both laws, until the point has max_seeds.
-std::vector<RunRequest> StabilityStudy::followUp(const RunSet& runs) const {
+FollowUp StabilityStudy::followUp(const RunSet& runs) const {
   SeedPatterns seeds;
   const StabilityGrid grid = voteGrid(c_, runs, seeds);
-  bool undecided = false;
+  std::vector<std::string> undecided;
   for (const auto& [key, agreement] : bootstrapOverSeeds(grid, seeds).verdict_agreement)
-    undecided = undecided || agreement < kDecidedAgreement;
-  std::vector<RunRequest> more;
-  if (!undecided) return more;
+    if (agreement < kDecidedAgreement)
+      undecided.push_back(fmt::format("'{}' ({:.0f} %)", key, 100 * agreement));
+  FollowUp more;
+  if (undecided.empty()) return more;
+  int points = 0;
   for (std::size_t p = 0; p < extra_.size(); ++p) {
     if (grid.verdicts[0][p].seedsAgree() && grid.verdicts[1][p].seedsAgree()) continue;
     const std::size_t have = seeds.patterns[0][p].size() - c_.seeds.size();
     const std::size_t to = std::min(extra_[p].size(), 2 * (have + c_.seed_step));
-    more.insert(more.end(), extra_[p].begin() + static_cast<long>(2 * have),
-                extra_[p].begin() + static_cast<long>(to));
+    more.runs.insert(more.runs.end(), extra_[p].begin() + static_cast<long>(2 * have),
+                     extra_[p].begin() + static_cast<long>(to));
+    points += to > 2 * have ? 1 : 0;
+    const std::size_t left = (extra_[p].size() - to) / 2;  // seeds after this round
+    const auto step = static_cast<std::size_t>(c_.seed_step);
+    more.rounds_after = std::max(more.rounds_after, static_cast<int>((left + step - 1) / step));
+    more.runs_after += 2 * left;
   }
+  more.reason = fmt::format(
+      "the verdicts {} agree in fewer than {:.0f} % of the seed resamples; {} more seed{} at the "
+      "{} points whose seeds disagree (up to {} seeds a point)",
+      fmt::join(undecided, ", "), 100 * kDecidedAgreement, c_.seed_step,
+      c_.seed_step == 1 ? "" : "s", points, c_.max_seeds);
   return more;
 }
 

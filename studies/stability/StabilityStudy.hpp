@@ -41,7 +41,7 @@ class StabilityStudy final : public Study {
     return "Stability diagrams of dry and wet vibrated layers (the paper's Fig. 3)";
   }
   std::vector<RunRequest> plan() const override { return requests_; }
-  std::vector<RunRequest> followUp(const RunSet& runs) const override;
+  FollowUp followUp(const RunSet& runs) const override;
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
  private:

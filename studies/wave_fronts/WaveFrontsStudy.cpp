@@ -217,9 +217,10 @@ void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<
 
 std::vector<int> WaveFrontsConfig::extraSeeds() const { return seedsAfter(seeds, max_seeds); }
 
-// More seeds of a law whose simplest-model verdict is undecided, seed_step at a time.
-std::vector<RunRequest> WaveFrontsStudy::followUp(const RunSet& runs) const {
-  std::vector<RunRequest> more;
+// More seeds of a law whose simplest-model verdict is undecided, seed_step at a time (three
+// runs a seed: the full model, no rotation, constant e), until the law has max_seeds.
+FollowUp WaveFrontsStudy::followUp(const RunSet& runs) const {
+  FollowUp more;
   for (int law = 0; law < kLaws; ++law) {
     const std::size_t have = seedsOf(c_, runs, law).size();
     if (have >= static_cast<std::size_t>(c_.max_seeds)) continue;
@@ -230,9 +231,18 @@ std::vector<RunRequest> WaveFrontsStudy::followUp(const RunSet& runs) const {
     if (!judgeModels(c_, in, law, all).undecided) continue;
     const std::size_t from = 3 * (have - c_.seeds.size());
     const std::size_t to = std::min(extra_[law].size(), from + 3 * c_.seed_step);
-    more.insert(more.end(), extra_[law].begin() + static_cast<long>(from),
-                extra_[law].begin() + static_cast<long>(to));
+    more.runs.insert(more.runs.end(), extra_[law].begin() + static_cast<long>(from),
+                     extra_[law].begin() + static_cast<long>(to));
+    more.reason += fmt::format("{}the {} law's simplest-model verdict is undecided over {} seeds",
+                               more.reason.empty() ? "" : "; ", kLawNames[law], have);
+    const std::size_t left = (extra_[law].size() - to) / 3;  // seeds after this round
+    const auto step = static_cast<std::size_t>(c_.seed_step);
+    more.rounds_after = std::max(more.rounds_after, static_cast<int>((left + step - 1) / step));
+    more.runs_after += 3 * left;
   }
+  if (!more.runs.empty())
+    more.reason +=
+        fmt::format(" (seeds are added {} at a time, up to {})", c_.seed_step, c_.max_seeds);
   return more;
 }
 

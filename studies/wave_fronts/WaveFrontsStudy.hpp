@@ -77,7 +77,7 @@ class WaveFrontsStudy final : public Study {
     return "Wave fronts in vibrated dry and wet layers: particles against the continuum";
   }
   std::vector<RunRequest> plan() const override { return requests_; }
-  std::vector<RunRequest> followUp(const RunSet& runs) const override;
+  FollowUp followUp(const RunSet& runs) const override;
   void analyse(const RunSet& runs, h5::File& results, Report& report) const override;
 
  private:

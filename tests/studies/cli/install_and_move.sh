@@ -23,9 +23,14 @@ for tree in "$src" "$build"; do
   named=$(strings "$prefix/bin/granwave" | grep -F "$tree" | grep -v -E '\.(cpp|hpp|h)$' | head -n 1)
   [ -z "$named" ] || fail "the installed program names $named"
 done
-# The tiny study among the installed study files, with their scene paths; LAMMPS "auto" with a
-# program that does not exist: the study checks the installed deck and leaves LAMMPS out.
-study=$prefix/share/granwave/studies/tiny-wave-fronts.toml
+[ -s "$prefix/share/doc/granwave/LICENSE" ] && [ -s "$prefix/share/doc/granwave/CITATION.cff" ] ||
+  fail "no LICENSE or CITATION.cff in share/doc/granwave"
+# The tiny study copied out of the prefix, naming the scenes as the shipped study files do
+# (../scenes/paper-*.toml, which is not beside the copy): they are found among the installed
+# ones (docs/studies.md). LAMMPS "auto" with a program that does not exist: the study checks
+# the installed deck and leaves LAMMPS out.
+mkdir -p "$work/copied"
+study=$work/copied/tiny-wave-fronts.toml
 sed -e 's|\.\./\.\./\.\./scenes/|../scenes/|' \
     -e 's|^run = "no".*|run = "auto"\nexecutable = "granwave-test-no-such-lammps"|' \
     "$src/tests/studies/data/tiny-wave-fronts.toml" > "$study"

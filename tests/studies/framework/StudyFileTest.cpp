@@ -157,5 +157,10 @@ TEST_F(StudyFileTest, ScenePathIsRelativeToTheStudyFileAndMustExist) {
   EXPECT_EQ(fs::path(f.scenePath("scenes", "dry", "")), (dir_ / "scenes/dry.toml"));
   const std::string m = studyError([&] { f.scenePath("scenes", "wet", ""); });
   EXPECT_TRUE(contains(m, "[scenes] wet")) << m;
-  EXPECT_TRUE(contains(m, "does not exist")) << m;
+  // Both places it looked: beside the study file, and among the installed study files.
+  EXPECT_TRUE(
+      contains(m, "no such file (looked in " + (dir_ / "scenes/wet.toml").string() + " and "))
+      << m;
+  EXPECT_TRUE(contains(m, "share/granwave/scenes/wet.toml)")) << m;
+  EXPECT_EQ(m.find('\n'), std::string::npos) << m;
 }

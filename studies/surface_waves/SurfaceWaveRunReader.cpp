@@ -1,0 +1,89 @@
+#include "studies/surface_waves/SurfaceWaveRunReader.hpp"
+
+#include <cmath>
+
+#include "coarse_grain/SurfaceWavesFile.hpp"
+#include "h5/File.hpp"
+#include "particles/H5mdLayout.hpp"
+#include "studies/framework/Measurement.hpp"
+#include "studies/run_files/RunOutputs.hpp"
+
+namespace granwave {
+
+namespace {
+
+// RMS(v_x) of the phase-averaged fields over the rows of area fraction >= 0.1 at every phase:
+// the paper's order parameter for the layer as a whole.
+double layerRmsVx(const ParticleFields& p) {
+  double sum = 0;
+  int n = 0;
+  for (int k = 0; k < p.phases; ++k)
+    for (int j = 0; j < p.nz; ++j) {
+      const double v = p.at(p.rms_velocity_x, k, j);
+      if (p.at(p.area_fraction, k, j) >= 0.1 && std::isfinite(v)) sum += v, ++n;
+    }
+  return n > 0 ? sum / n : NAN;
+}
+
+// Dissipation over the steady part (after the first fifth of the run, as the run's period):
+// the energy lost per drive cycle over the mean kinetic energy, and the pair impacts' e_eff.
+void readDissipation(const std::string& run_path, double frequency, SurfaceWaveRun& r) {
+  const h5::File f = h5::File::openReadOnly(run_path);
+  const auto series = [&](const char* name) {
+    return f.readDataset<double>(h5md::observableGroup(name) + "/value");
+  };
+  const auto time = f.readDataset<double>(h5md::observableGroup("center_of_mass_height") + "/time");
+  const auto lost = series("dissipated_energy"), kinetic = series("kinetic_energy");
+  const auto impact = series("pair_impact_energy"), loss = series("pair_impact_loss");
+  const std::size_t n = time.size();
+  if (n < 10 || lost.size() != n || kinetic.size() != n || impact.size() != n) return;
+  const std::size_t first = n / 5, last = n - 1;
+  double ke = 0;
+  for (std::size_t i = first; i <= last; ++i) ke += kinetic[i];
+  ke /= static_cast<double>(last - first + 1);
+  const double cycles = (time[last] - time[first]) * frequency;
+  r.loss_per_cycle = (lost[last] - lost[first]) / cycles / ke;
+  const double de = impact[last] - impact[first], dl = loss[last] - loss[first];
+  r.e_eff = de > 0 ? std::sqrt(std::max(0.0, 1.0 - dl / de)) : NAN;
+}
+
+}  // namespace
+
+SurfaceWaveRun readSurfaceWaveRun(const RunRecord& rec, const SurfaceWavePoint& point) {
+  SurfaceWaveRun r;
+  r.point = point;
+  r.label = rec.request.label;
+  r.ok = rec.ok;
+  if (!rec.ok) {
+    r.failure = rec.message;
+    return r;
+  }
+  const SurfaceWaveAnalysis s = readSurfaceWaves(rec.fieldsPath());
+  r.spectrum = s.available;
+  if (s.available) {
+    r.amplitude_d = {s.amplitude_d, s.amplitude_error_d};
+    // The wavelength of the windows that have a wave (a window without one holds noise).
+    std::vector<double> lambda;
+    for (const SurfaceWindow& w : s.windows)
+      if (w.wave) lambda.push_back(w.wavelength_d);
+    r.wavelength_d = meanAndStandardError(lambda);
+    if (lambda.size() == 1) r.wavelength_d.error = 0;
+    r.share = {s.subharmonic_share, s.subharmonic_share_error};
+    r.noise_d = s.noise_d;
+    r.wave_fraction = s.wave_fraction;
+    r.windows = static_cast<int>(s.windows.size());
+    r.standing_mode = s.standing_mode;
+  }
+  const LayerPatterns lp = readLayerPatterns(rec.fieldsPath());
+  r.period = lp.period;
+  if (lp.available) {
+    r.detector_wave = lp.surface_wave;
+    r.detector_mode = lp.surface_wave_mode;
+    r.detector_amplitude_d = lp.surface_wave_amplitude_d;
+  }
+  r.rms_vx = layerRmsVx(readParticleFields(rec.fieldsPath()));
+  readDissipation(rec.runPath(), point.frequency, r);
+  return r;
+}
+
+}  // namespace granwave

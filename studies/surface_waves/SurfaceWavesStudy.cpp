@@ -1,0 +1,201 @@
+#include "studies/surface_waves/SurfaceWavesStudy.hpp"
+
+#include <fmt/format.h>
+
+#include <cmath>
+#include <set>
+
+#include "studies/framework/Measurement.hpp"
+#include "studies/surface_waves/SurfaceWavesAnalysis.hpp"
+#include "studies/surface_waves/SurfaceWavesReport.hpp"
+
+namespace granwave {
+
+namespace {
+
+// "a=1; b=2" -> {"a=1", "b=2"} (blanks around each override dropped).
+std::vector<std::string> splitOverrides(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    std::string item = text.substr(start, end - start);
+    const auto first = item.find_first_not_of(' ');
+    const auto last = item.find_last_not_of(' ');
+    if (first != std::string::npos) out.push_back(item.substr(first, last - first + 1));
+    start = end + 1;
+  }
+  return out;
+}
+
+std::vector<SurfaceWaveVariant> readVariants(StudyFile& f) {
+  const auto names = f.strings("variants", "names", {"dry", "wet"});
+  const auto laws = f.strings("variants", "laws", {"dry", "wet"});
+  const auto sets = f.strings("variants", "set", std::vector<std::string>(names.size(), ""));
+  if (names.empty()) f.fail("variants", "names", "expected at least one variant");
+  if (laws.size() != names.size() || sets.size() != names.size())
+    f.fail("variants", "laws", "names, laws and set must have one entry per variant");
+  std::vector<SurfaceWaveVariant> v;
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (!seen.insert(names[i]).second)
+      f.fail("variants", "names", "variant '" + names[i] + "' is listed twice");
+    int law = -1;
+    for (int k = 0; k < kLaws; ++k)
+      if (laws[i] == kLawNames[k]) law = k;
+    if (law < 0) f.fail("variants", "laws", "'" + laws[i] + "': valid laws are dry, wet");
+    v.push_back({names[i], law, splitOverrides(sets[i])});
+  }
+  return v;
+}
+
+std::vector<int> variantList(StudyFile& f, const std::string& section, const SurfaceWavesConfig& c,
+                             std::vector<std::string> fallback) {
+  std::vector<int> out;
+  for (const std::string& name : f.strings(section, "variants", std::move(fallback))) {
+    const int i = c.variantIndex(name);
+    if (i < 0) f.fail(section, "variants", "'" + name + "' is not a name of [variants]");
+    out.push_back(i);
+  }
+  return out;
+}
+
+void requirePositive(StudyFile& f, const char* section, const char* key,
+                     const std::vector<double>& v) {
+  if (v.empty()) f.fail(section, key, "expected at least one value");
+  for (double x : v)
+    if (!(x > 0)) f.fail(section, key, "expected positive values");
+}
+
+void readScans(StudyFile& f, SurfaceWavesConfig& c) {
+  c.width_d = f.number("grid", "width", c.width_d);
+  c.periodic = f.boolean("grid", "periodic", c.periodic);
+  c.rows = f.integer("grid", "rows", c.rows);
+  c.frequencies = f.numbers("grid", "frequencies", c.frequencies);
+  c.gammas = f.numbers("grid", "gammas", c.gammas);
+  c.widths_d = f.numbers("widths", "widths", c.widths_d);
+  c.boundaries = f.strings("widths", "boundaries", c.boundaries);
+  c.width_frequency = f.number("widths", "frequency", c.width_frequency);
+  c.width_gamma = f.number("widths", "gamma", c.width_gamma);
+  c.width_variants = variantList(f, "widths", c, {c.variants.front().name});
+  c.depth_rows = f.integers("depths", "rows", c.depth_rows);
+  c.depth_frequencies = f.numbers("depths", "frequencies", c.depth_frequencies);
+  c.depth_gamma = f.number("depths", "gamma", c.depth_gamma);
+  c.depth_variants = variantList(f, "depths", c, {c.variants.front().name});
+  c.dissipation_gamma = f.number("dissipation", "gamma", c.dissipation_gamma);
+  requirePositive(f, "grid", "frequencies", c.frequencies);
+  requirePositive(f, "grid", "gammas", c.gammas);
+  requirePositive(f, "widths", "widths", c.widths_d);
+  requirePositive(f, "depths", "frequencies", c.depth_frequencies);
+  for (double w : c.widths_d)
+    if (std::abs(w - std::round(w)) > 1e-9) f.fail("widths", "widths", "widths are whole d");
+  if (c.rows < 1) f.fail("grid", "rows", "expected at least 1 row");
+  for (int r : c.depth_rows)
+    if (r < 1) f.fail("depths", "rows", "expected at least 1 row");
+  for (const std::string& b : c.boundaries)
+    if (b != "periodic" && b != "walls")
+      f.fail("widths", "boundaries", "'" + b + "': valid boundaries are periodic, walls");
+}
+
+}  // namespace
+
+int SurfaceWavesConfig::variantIndex(const std::string& name) const {
+  for (std::size_t i = 0; i < variants.size(); ++i)
+    if (variants[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string SurfaceWavesConfig::label(const SurfaceWavePoint& p) const {
+  return fmt::format("ED {} W={} {} rows={} f={} Gamma={} seed={}", variants[p.variant].name,
+                     formatCompact(p.width_d), p.periodic ? "periodic" : "walls", p.rows,
+                     formatCompact(p.frequency), formatCompact(p.gamma), p.seed);
+}
+
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::onsetPoints() const {
+  std::vector<SurfaceWavePoint> out;
+  for (std::size_t v = 0; v < variants.size(); ++v)
+    for (double f : frequencies)
+      for (double g : gammas)
+        for (int s : seeds) out.push_back({static_cast<int>(v), width_d, periodic, rows, f, g, s});
+  return out;
+}
+
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::widthPoints() const {
+  std::vector<SurfaceWavePoint> out;
+  for (int v : width_variants)
+    for (const std::string& b : boundaries)
+      for (double w : widths_d)
+        for (int s : seeds)
+          out.push_back({v, w, b == "periodic", rows, width_frequency, width_gamma, s});
+  return out;
+}
+
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::depthPoints() const {
+  std::vector<SurfaceWavePoint> out;
+  for (int v : depth_variants)
+    for (int r : depth_rows)
+      for (double f : depth_frequencies)
+        for (int s : seeds) out.push_back({v, width_d, periodic, r, f, depth_gamma, s});
+  return out;
+}
+
+SurfaceWavesStudy::SurfaceWavesStudy(StudyFile& f) {
+  c_.scenes = LawScenes::read(f);
+  c_.variants = readVariants(f);
+  c_.cycles = f.integer("particles", "cycles", c_.cycles);
+  c_.seeds = f.integers("particles", "seeds", c_.seeds);
+  c_.window = f.integer("particles", "window_cycles", c_.window);
+  c_.blocks = f.integer("particles", "blocks", c_.blocks);
+  if (c_.cycles < 40)
+    f.fail("particles", "cycles",
+           "expected at least 40 cycles (the transient, then windows of 10 cycles for the "
+           "spectrum's errors)");
+  if (c_.seeds.empty() || std::set<int>(c_.seeds.begin(), c_.seeds.end()).size() != c_.seeds.size())
+    f.fail("particles", "seeds", "expected distinct seeds");
+  if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2 blocks");
+  readScans(f, c_);
+  c_.scenes.loadBase(f);
+  c_.diameter = c_.scenes.base[0].particles.diameter;
+  addRequests(f, c_.onsetPoints());
+  addRequests(f, c_.widthPoints());
+  addRequests(f, c_.depthPoints());
+}
+
+void SurfaceWavesStudy::addRequests(const StudyFile& f,
+                                    const std::vector<SurfaceWavePoint>& points) {
+  for (const SurfaceWavePoint& p : points) {
+    const std::string label = c_.label(p);
+    bool known = false;
+    for (const RunRequest& q : requests_) known = known || q.label == label;
+    if (known) continue;  // a point shared by two scans runs once
+    const SurfaceWaveVariant& v = c_.variants[p.variant];
+    // The paper's box keeps about 21 d of free height above its 10 rows; so does every depth.
+    const double height_d = 30.0 + 0.5 * std::sqrt(3.0) * (p.rows - 10);
+    std::vector<std::string> set = v.set;
+    const int count = static_cast<int>(std::lround(p.width_d)) * p.rows;
+    set.push_back(fmt::format("particles.count={}", count));
+    set.push_back(fmt::format("container.width={}", formatCompact(p.width_d * c_.diameter)));
+    set.push_back(fmt::format("container.height={}", formatCompact(height_d * c_.diameter)));
+    set.push_back(fmt::format("container.periodic_x={}", p.periodic ? "true" : "false"));
+    set.push_back(fmt::format("drive.frequency={}", formatCompact(p.frequency)));
+    set.push_back(fmt::format("drive.gamma={}", formatCompact(p.gamma)));
+    set.push_back(fmt::format("run.seed={}", p.seed));
+    set.push_back(fmt::format("run.duration={}", formatCompact(c_.cycles / p.frequency)));
+    RunRequest q = runRequest(RunKind::Particles, label, c_.scenes.scene(f, v.law, set));
+    q.window_cycles = c_.window;
+    q.blocks = c_.blocks;
+    requests_.push_back(std::move(q));
+  }
+}
+
+void SurfaceWavesStudy::analyse(const RunSet& runs, h5::File& results, Report& report) const {
+  const SurfaceWavesResults r = analyseSurfaceWavesStudy(c_, runs);
+  writeSurfaceWavesResults(results, r);
+  reportSurfaceWaves(c_, r, report);
+}
+
+std::unique_ptr<Study> makeSurfaceWavesStudy(StudyFile& file) {
+  return std::make_unique<SurfaceWavesStudy>(file);
+}
+
+}  // namespace granwave
