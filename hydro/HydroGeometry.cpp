@@ -1,6 +1,6 @@
 #include <cmath>
 
-#include "hydro/GranularHydro1D.hpp"
+#include "hydro/HydroGeometry.hpp"
 
 namespace granwave::hydro {
 
