@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """How often two reruns of the wave-fronts study give the same simplest-model verdict, for the
-verdict rule of before and after issue 15's last change (docs/studies.md, "Verdict stability").
+verdict rule that judged each seed's period and the rule that judges the pooled time share
+(docs/studies.md, "Verdict stability").
 
 usage: verdict_reproducibility.py [--trials K] [--seed S]
 

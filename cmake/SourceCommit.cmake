@@ -1,5 +1,5 @@
 # Records the git commit of the source tree and whether it had uncommitted changes, for the
-# report's provenance (studies/framework/InstalledFiles.hpp). Run at every build by the target
+# report's provenance (studies/installation/InstalledFiles.hpp). Run at every build by the target
 # granwave_source_commit; the file changes only when the commit or the state does, and it is
 # read at run time, so the executable's bytes (and with them the run cache's key) do not
 # depend on it.

@@ -10,6 +10,22 @@ double FieldsAnalysis::plateHeight(int phase) const {
   return context.amplitude * std::sin(2 * std::numbers::pi * context.frequency * phaseTime(phase));
 }
 
+PhaseProfiles FieldsAnalysis::profiles() const {
+  PhaseProfiles p;
+  for (int j = 0; j < pooled.nz; ++j) p.z.push_back(grid.zCentre(j));
+  for (int k = 0; k < pooled.phases; ++k) {
+    p.time.push_back(phaseTime(k));
+    p.phase.push_back(static_cast<double>(k) / samples_per_cycle);  // 0 .. cycles_per_window
+    p.plate_height.push_back(plateHeight(k));
+  }
+  p.front_height = front_height;
+  p.front_peak_temperature = front_peak;
+  p.pooled = profilesOf(pooled);
+  for (const PhaseFields& b : per_block) p.blocks.push_back(profilesOf(b));
+  p.fronts = fronts;
+  return p;
+}
+
 FieldsAnalysis analyseFields(const PhaseAverager& av, const FieldsContext& ctx,
                              const FrontOptions& fo, int min_count) {
   if (av.firstPooledCycle() < 0 || av.pooledCycles() <= 0)

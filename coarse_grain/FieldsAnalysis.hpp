@@ -1,7 +1,7 @@
 #pragma once
 // Everything `granwave fields` derives from a phase-averaged run: pooled and per-block
 // fields, profiles, fronts with speeds, and what was pooled. One value, written to a file by
-// FieldsFile and read by the studies.
+// FieldsFile; the studies read the file back through FieldsReader.
 #include <string>
 #include <vector>
 
@@ -9,6 +9,7 @@
 #include "coarse_grain/PeriodDoublingSeries.hpp"
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
+#include "coarse_grain/PhaseProfiles.hpp"
 #include "coarse_grain/StatePhaseAverager.hpp"
 #include "coarse_grain/SurfaceWaveSpectrum.hpp"
 #include "coarse_grain/WaveFront.hpp"
@@ -45,6 +46,8 @@ struct FieldsAnalysis {
   std::vector<FieldsAnalysis> states;
   double phaseTime(int phase) const { return phase / (samples_per_cycle * context.frequency); }
   double plateHeight(int phase) const;
+  // The window's profiles, phases and fronts, as the fields file stores them.
+  PhaseProfiles profiles() const;
 };
 
 // Throws std::runtime_error if nothing was pooled (the run never became steady or was too

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "coarse_grain/FieldsLayout.hpp"
 #include "coarse_grain/SurfaceWavesFile.hpp"
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
@@ -17,6 +18,7 @@ namespace granwave {
 
 namespace {
 
+namespace L = fields_layout;
 using Shape = h5::Shape;
 
 void put(h5::File& f, const std::string& path, const std::vector<double>& v, const Shape& shape,
@@ -83,8 +85,8 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name, const F
 
 // The live classification (/patterns, docs/classification.md): both solid criteria.
 void writePatterns(h5::File& f, const PatternResult& pr) {
-  f.createGroup("/patterns");
-  const std::string g = "/patterns";
+  const std::string& g = L::kPatterns;
+  f.createGroup(g);
   f.writeAttribute<std::int64_t>(g, "available", pr.available ? 1 : 0);
   if (pr.available) {
     f.writeAttribute<double>(g, "phase", pr.phase);
@@ -119,16 +121,17 @@ void writePatterns(h5::File& f, const PatternResult& pr) {
 // period as rows of three).
 void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
   if (pd.f2_strength.empty()) return;
-  const std::string g = "/period_doubling";
+  const std::string& g = L::kPeriodDoubling;
   f.createGroup(g);
-  put(f, g + "/f2_strength", pd.f2_strength, {pd.f2_strength.size()}, "1");
-  put(f, g + "/noise_strength", pd.noise_strength, {pd.noise_strength.size()}, "1");
-  put(f, g + "/threshold", pd.threshold, {pd.threshold.size()}, "1");
+  put(f, g + "/" + L::kF2Strength, pd.f2_strength, {pd.f2_strength.size()}, "1");
+  put(f, g + "/" + L::kNoiseStrength, pd.noise_strength, {pd.noise_strength.size()}, "1");
+  put(f, g + "/" + L::kThreshold, pd.threshold, {pd.threshold.size()}, "1");
   std::vector<std::int64_t> episodes;
   for (const StateEpisode& e : pd.episodes)
     episodes.insert(episodes.end(), {e.first_cycle, e.cycles, e.period});
-  f.writeDataset(g + "/episodes", episodes, {pd.episodes.size(), 3});
-  f.writeStringAttribute(g + "/episodes", "unit", "1");  // cycles, cycles, period (counts)
+  f.writeDataset(g + "/" + L::kEpisodes, episodes, {pd.episodes.size(), 3});
+  // cycles, cycles, period (counts)
+  f.writeStringAttribute(g + "/" + L::kEpisodes, "unit", "1");
   f.writeAttribute<std::int64_t>(g, "window_cycles", pd.window_cycles);
   f.writeAttribute<std::int64_t>(g, "first_cycle", pd.first_cycle);
   f.writeAttribute<double>(g, "period2_share", pd.period2_share);
@@ -138,91 +141,43 @@ void writePeriodDoubling(h5::File& f, const PeriodDoublingSeries& pd) {
   f.writeAttribute<std::int64_t>(g, "switches", pd.switches);
 }
 
-// Profiles, per-block profiles, phases and fronts of `a` under `root` ("" for the whole run;
-// readParticleFields reads the same layout).
-void writeProfilesAndFronts(h5::File& f, const std::string& root, const FieldsAnalysis& a) {
-  const PhaseFields& p = a.pooled;
-  const std::size_t P = p.phases, Z = p.nz, B = a.per_block.size();
-  f.createGroup(root + "/profiles");
-  put(f, root + "/profiles/temperature", p.profile_temperature, {P, Z}, "J");
-  put(f, root + "/profiles/velocity_z", p.profile_velocity_z, {P, Z}, "m s-1");
-  put(f, root + "/profiles/rms_velocity_x", p.profile_rms_velocity_x, {P, Z}, "m s-1");
-  put(f, root + "/profiles/area_fraction", p.profile_area_fraction, {P, Z}, "1");
-
-  f.createGroup(root + "/blocks/profiles");
-  auto stack = [&](auto member) {
-    std::vector<double> v;
-    for (const PhaseFields& b : a.per_block)
-      v.insert(v.end(), (b.*member).begin(), (b.*member).end());
-    return v;
-  };
-  put(f, root + "/blocks/profiles/temperature", stack(&PhaseFields::profile_temperature), {B, P, Z},
-      "J");
-  put(f, root + "/blocks/profiles/velocity_z", stack(&PhaseFields::profile_velocity_z), {B, P, Z},
-      "m s-1");
-  put(f, root + "/blocks/profiles/rms_velocity_x", stack(&PhaseFields::profile_rms_velocity_x),
-      {B, P, Z}, "m s-1");
-  put(f, root + "/blocks/profiles/area_fraction", stack(&PhaseFields::profile_area_fraction),
-      {B, P, Z}, "1");
-
-  std::vector<double> time(P), phase(P), plate(P);
-  for (std::size_t k = 0; k < P; ++k) {
-    time[k] = a.phaseTime(static_cast<int>(k));
-    phase[k] = static_cast<double>(k) / a.samples_per_cycle;
-    plate[k] = a.plateHeight(static_cast<int>(k));
-  }
-  f.createGroup(root + "/phases");
-  put(f, root + "/phases/time", time, {P}, "s");
-  put(f, root + "/phases/phase", phase, {P}, "1");  // t/T, 0 .. cycles_per_window
-  put(f, root + "/phases/plate_height", plate, {P}, "m");
-  put(f, root + "/phases/center_of_mass_height", p.center_of_mass_height, {P}, "m");
-  put(f, root + "/phases/front_height", a.front_height, {P}, "m");
-  put(f, root + "/phases/front_peak_temperature", a.front_peak, {P}, "1");  // T~_g / T0
-
-  f.createGroup(root + "/fronts");
-  const std::size_t E = a.fronts.size();
-  auto column = [&](auto get) {
-    std::vector<double> v;
-    for (const FrontEpisode& e : a.fronts) v.push_back(get(e));
-    return v;
-  };
-  put(f, root + "/fronts/first_phase", column([](auto& e) { return double(e.first_phase); }), {E},
-      "1");
-  put(f, root + "/fronts/last_phase", column([](auto& e) { return double(e.last_phase); }), {E},
-      "1");
-  put(f, root + "/fronts/speed", column([](auto& e) { return e.speed; }), {E}, "m s-1");
-  put(f, root + "/fronts/speed_error", column([](auto& e) { return e.speed_error; }), {E}, "m s-1");
-  put(f, root + "/fronts/fit_error", column([](auto& e) { return e.fit_error; }), {E}, "m s-1");
-  put(f, root + "/fronts/block_spread", column([](auto& e) { return e.block_spread; }), {E},
-      "m s-1");
-  put(f, root + "/fronts/blocks_used", column([](auto& e) { return double(e.blocks_used); }), {E},
-      "1");
-  put(f, root + "/fronts/gas_velocity_ahead", column([](auto& e) { return e.gas_velocity_ahead; }),
-      {E}, "m s-1");
-  put(f, root + "/fronts/speed_relative", column([](auto& e) { return e.speed_relative; }), {E},
-      "m s-1");
-  put(f, root + "/fronts/peak_temperature", column([](auto& e) { return e.peak_temperature; }), {E},
-      "1");
-  put(f, root + "/fronts/start_above_plate", column([](auto& e) { return e.start_above_plate; }),
-      {E}, "m");
-  put(f, root + "/fronts/from_impact", column([](auto& e) { return e.from_impact ? 1.0 : 0.0; }),
-      {E}, "1");
-}
-
 // The fields conditioned on the layer's state (/states/period1, /states/period2; attributes
 // windows and pooled_cycles); /states has windows_period1 and windows_period2 (-1: not measured).
 void writeStates(h5::File& f, const FieldsAnalysis& a) {
   if (a.state_windows[0] < 0) return;
-  f.createGroup("/states");
-  f.writeAttribute<std::int64_t>("/states", "windows_period1", a.state_windows[0]);
-  f.writeAttribute<std::int64_t>("/states", "windows_period2", a.state_windows[1]);
+  f.createGroup(L::kStates);
+  for (int k = 0; k < 2; ++k)
+    f.writeAttribute<std::int64_t>(L::kStates, L::kStateWindows[k], a.state_windows[k]);
   for (const FieldsAnalysis& s : a.states) {
-    const std::string root = fmt::format("/states/period{}", s.state_period);
+    const std::string root = L::stateRoot(s.state_period);
     f.createGroup(root);
-    writeProfilesAndFronts(f, root, s);
-    f.writeAttribute<std::int64_t>(root, "windows", a.state_windows[s.state_period - 1]);
-    f.writeAttribute<std::int64_t>(root, "pooled_cycles", s.pooled_cycles);
+    writePhaseProfiles(f, root, s.profiles());
+    f.writeAttribute<std::int64_t>(root, L::kWindows, a.state_windows[s.state_period - 1]);
+    f.writeAttribute<std::int64_t>(root, L::kPooledCycles, s.pooled_cycles);
   }
+}
+
+void writeParameters(h5::File& f, const FieldsAnalysis& a) {
+  const std::string& par = L::kParameters;
+  f.createGroup(par);
+  f.writeStringAttribute(par, L::kFormat, kFieldsFormat);
+  f.writeStringAttribute(par, L::kSource, a.context.source);
+  f.writeAttribute<double>(par, L::kDiameter, a.context.diameter);
+  f.writeAttribute<double>(par, L::kMass, a.context.mass);
+  f.writeAttribute<double>(par, L::kFrequency, a.context.frequency);
+  f.writeAttribute<double>(par, L::kAmplitude, a.context.amplitude);
+  f.writeAttribute<double>(par, L::kT0, a.context.T0);
+  f.writeAttribute<std::int64_t>(par, L::kSamplesPerCycle, a.samples_per_cycle);
+  f.writeAttribute<std::int64_t>(par, L::kCyclesPerWindow, a.cycles_per_window);
+  f.writeAttribute<std::int64_t>(par, L::kBlocks, a.blocks);
+  f.writeAttribute<std::int64_t>(par, L::kDiscardedCycles, a.discarded_cycles);
+  f.writeAttribute<std::int64_t>(par, L::kPooledCycles, a.pooled_cycles);
+  f.writeAttribute<std::int64_t>(par, L::kLayerPeriod, a.context.layer_period);
+  f.writeAttribute<std::int64_t>(par, L::kMinCount, a.params.min_count);
+  f.writeAttribute<double>(par, L::kFrontThreshold, a.front_options.threshold);
+  f.writeAttribute<double>(par, L::kFrontLayerMinAreaFraction,
+                           a.front_options.layer_min_area_fraction);
+  f.writeStringDataset(L::kScene, a.context.scene_toml);
 }
 
 }  // namespace
@@ -231,6 +186,37 @@ std::string xdmfSidecarPath(const std::string& fields_path) {
   std::filesystem::path p(fields_path);
   p.replace_extension(".xdmf");
   return p.string();
+}
+
+void writePhaseProfiles(h5::File& f, const std::string& root, const PhaseProfiles& p) {
+  const std::size_t P = p.phases(), Z = p.rows(), B = p.blocks.size();
+  f.createGroup(root + L::kProfiles);
+  for (const L::FieldColumn& c : L::kProfileFields)
+    if (!(p.pooled.*c.values).empty())
+      put(f, root + L::kProfiles + "/" + c.name, p.pooled.*c.values, {P, Z}, c.unit);
+  if (B > 0) {
+    f.createGroup(root + L::kBlockProfiles);
+    for (const L::FieldColumn& c : L::kProfileFields) {
+      std::vector<double> stacked;
+      for (const PhaseFields& b : p.blocks)
+        stacked.insert(stacked.end(), (b.*c.values).begin(), (b.*c.values).end());
+      put(f, root + L::kBlockProfiles + "/" + c.name, stacked, {B, P, Z}, c.unit);
+    }
+  }
+  const std::string phases = root + L::kPhases + "/";
+  f.createGroup(root + L::kPhases);
+  put(f, phases + L::kTime, p.time, {P}, "s");
+  put(f, phases + L::kPhase, p.phase, {P}, "1");
+  put(f, phases + L::kPlateHeight, p.plate_height, {P}, "m");
+  put(f, phases + L::kCenterOfMass, p.pooled.center_of_mass_height, {P}, "m");
+  put(f, phases + L::kFrontHeight, p.front_height, {P}, "m");
+  put(f, phases + L::kFrontPeak, p.front_peak_temperature, {P}, "1");
+  f.createGroup(root + L::kFronts);
+  for (const L::FrontColumn& c : L::kFrontColumns) {
+    std::vector<double> column;
+    for (const FrontEpisode& e : p.fronts) column.push_back(c.get(e));
+    put(f, root + L::kFronts + "/" + c.name, column, {p.fronts.size()}, c.unit);
+  }
 }
 
 void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
@@ -244,22 +230,18 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   for (std::size_t i = 0; i < X; ++i) xs[i] = g.xCentre(static_cast<int>(i));
   for (std::size_t j = 0; j < Z; ++j) zs[j] = g.zCentre(static_cast<int>(j));
   f.createGroup("/grid");
-  put(f, "/grid/x", xs, {X}, "m");
-  put(f, "/grid/z", zs, {Z}, "m");
+  put(f, L::kGridX, xs, {X}, "m");
+  put(f, L::kGridZ, zs, {Z}, "m");
 
-  f.createGroup("/fields");
-  put(f, "/fields/count", p.count, {P, Z, X}, "1");
-  put(f, "/fields/area_fraction", p.area_fraction, {P, Z, X}, "1");
-  put(f, "/fields/velocity_x", p.velocity_x, {P, Z, X}, "m s-1");
-  put(f, "/fields/velocity_z", p.velocity_z, {P, Z, X}, "m s-1");
-  put(f, "/fields/temperature", p.temperature, {P, Z, X}, "J");
-  put(f, "/fields/rotational_temperature", p.rotational_temperature, {P, Z, X}, "J");
+  f.createGroup(L::kFields);
+  for (const L::FieldColumn& c : L::kCellFields)
+    put(f, L::kFields + "/" + c.name, p.*c.values, {P, Z, X}, c.unit);
 
-  writeProfilesAndFronts(f, "", a);
+  writePhaseProfiles(f, "", a.profiles());
   writeStates(f, a);
 
   for (std::size_t ph = 0; ph < P; ++ph) {
-    const std::string grp = fmt::format("/xdmf/p{:04d}", ph);
+    const std::string grp = fmt::format("{}/p{:04d}", L::kXdmf, ph);
     f.createGroup(grp);
     const int k = static_cast<int>(ph);
     put(f, grp + "/area_fraction", slab(p, p.area_fraction, k), {Z, 1, X}, "1");
@@ -277,27 +259,7 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   writePatterns(f, a.patterns);
   writeSurfaceWaves(f, a.surface);
   writePeriodDoubling(f, a.context.period_doubling);
-
-  f.createGroup("/parameters");
-  const std::string par = "/parameters";
-  f.writeStringAttribute(par, "format", kFieldsFormat);
-  f.writeStringAttribute(par, "source", a.context.source);
-  f.writeAttribute<double>(par, "diameter", a.context.diameter);
-  f.writeAttribute<double>(par, "mass", a.context.mass);
-  f.writeAttribute<double>(par, "frequency", a.context.frequency);
-  f.writeAttribute<double>(par, "amplitude", a.context.amplitude);
-  f.writeAttribute<double>(par, "T0", a.context.T0);
-  f.writeAttribute<std::int64_t>(par, "samples_per_cycle", a.samples_per_cycle);
-  f.writeAttribute<std::int64_t>(par, "cycles_per_window", a.cycles_per_window);
-  f.writeAttribute<std::int64_t>(par, "blocks", a.blocks);
-  f.writeAttribute<std::int64_t>(par, "discarded_cycles", a.discarded_cycles);
-  f.writeAttribute<std::int64_t>(par, "pooled_cycles", a.pooled_cycles);
-  f.writeAttribute<std::int64_t>(par, "layer_period", a.context.layer_period);
-  f.writeAttribute<std::int64_t>(par, "min_count", a.params.min_count);
-  f.writeAttribute<double>(par, "front_threshold", a.front_options.threshold);
-  f.writeAttribute<double>(par, "front_layer_min_area_fraction",
-                           a.front_options.layer_min_area_fraction);
-  f.writeStringDataset("/parameters/scene", a.context.scene_toml);
+  writeParameters(f, a);
   af.commit();
   // The pair or neither: a fields file without its sidecar is removed again.
   try {

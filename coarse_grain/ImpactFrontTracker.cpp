@@ -47,6 +47,16 @@ int bestCrossing(const FrontProfiles& p, int ph, int jb, int ja, double mid) {
 
 }  // namespace
 
+FrontProfiles frontProfiles(const PhaseFields& fields, const std::vector<double>& z) {
+  FrontProfiles f;
+  f.phases = fields.phases;
+  f.nz = fields.nz;
+  f.z = z;
+  f.density = fields.profile_area_fraction;
+  f.velocity = fields.profile_velocity_z;
+  return f;
+}
+
 FrontCrossing locateFront(const FrontProfiles& p, int ph, const FrontTrackOptions& o) {
   FrontCrossing c;
   int lo = -1, hi = -1, jb = -1;
@@ -131,6 +141,30 @@ TrackedFront episodeFrom(const std::vector<FrontCrossing>& cs, int s, double dt,
 
 }  // namespace
 
+namespace {
+
+// Whether the front first seen at phase s, high above the bottom, crossed the rows below it
+// within the phase: at s every layer row below it moves at or above the front's midpoint
+// velocity (behind it), and one phase before the lowest layer row was still below it (ahead).
+bool crossedBelowWithinPhase(const FrontProfiles& p, const std::vector<FrontCrossing>& cs, int s,
+                             const FrontTrackOptions& o) {
+  const FrontCrossing& c = cs[s];
+  const double mid = 0.5 * (c.velocity_behind + c.velocity_ahead);
+  const int n = p.phases, before = (s + n - 1) % n;
+  int lowest = -1;
+  for (int j = 0; j < p.nz && p.height(s, j) < c.height; ++j) {
+    const double rho = p.at(p.density, s, j), v = p.at(p.velocity, s, j);
+    if (!(rho >= o.min_density) || !finite(v)) continue;
+    if (v < mid) return false;
+    if (lowest < 0) lowest = j;
+  }
+  if (lowest < 0 || n < 2) return false;
+  const double v_before = p.at(p.velocity, before, lowest);
+  return finite(v_before) && v_before < mid;
+}
+
+}  // namespace
+
 std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double dt,
                                       const FrontTrackOptions& o) {
   const int n = p.phases;
@@ -142,9 +176,14 @@ std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double dt,
   std::vector<TrackedFront> out;
   for (int s = 0; s < n; ++s) {
     const FrontCrossing& c = cs[s];
-    if (!c.found || c.height > c.layer_bottom + o.impact_rows * c.spacing) continue;
+    if (!c.found) continue;
     if (n > 1 && continues((s + n - 1) % n, s)) continue;  // not the episode's first phase
-    out.push_back(episodeFrom(cs, s, dt, o));
+    const bool at_bottom = c.height <= c.layer_bottom + o.impact_rows * c.spacing;
+    if (!at_bottom && !crossedBelowWithinPhase(p, cs, s, o)) continue;
+    TrackedFront e = episodeFrom(cs, s, dt, o);
+    e.bulk_crossing = at_bottom ? 0.0 : c.height - c.layer_bottom;
+    e.bulk_speed_lower_bound = at_bottom ? kNaNValue : e.bulk_crossing / dt;
+    out.push_back(std::move(e));
   }
   return out;
 }

@@ -12,11 +12,15 @@
 //
 // An episode is a run of consecutive phases (cyclic over the window) with a front that does not
 // move down by more than one row spacing per phase, starting within `impact_rows` rows of the
-// bottom of the layer; its speed is the slope of a straight line through height vs time from
-// the last phase before the front has risen by a row spacing (earlier phases are the layer's
-// dilute underside compacting against the plate, not propagation). With
-// fewer than `min_points` phases the front crossed the layer faster than the sampling resolves:
-// the episode then carries only a lower bound on its speed, (layer thickness) / (phases + 1) dt.
+// bottom of the layer, or higher when every row below it already moves behind the front and
+// the bottom row was still ahead of it one phase before: the impact then crossed the packed
+// bottom of the layer within that phase (a deep layer of hard grains passes an impact on at
+// once), which the episode records as a bulk crossing with a lower bound on its speed; its speed is
+// the slope of a straight line through height vs time from the last phase before the front has
+// risen by a row spacing (earlier phases are the layer's dilute underside compacting against the
+// plate, not propagation). With fewer than `min_points` phases the front crossed the layer faster
+// than the sampling resolves: the episode then carries only a lower bound on its speed, (layer
+// thickness) / (phases + 1) dt.
 //
 // Rankine-Hugoniot check (mass conservation across a moving discontinuity): with the states a
 // few rows behind (b) and ahead (a) of the front, s = (rho_b v_b - rho_a v_a) / (rho_b - rho_a)
@@ -24,6 +28,8 @@
 // of the noise, which the hydro solver's shocks have and a dense particle layer may not.
 #include <cstdint>
 #include <vector>
+
+#include "coarse_grain/PhaseFields.hpp"
 
 namespace granwave {
 
@@ -50,6 +56,10 @@ struct FrontProfiles {
   }
 };
 
+// The lab-frame profiles of phase fields on rows at heights `z`, as the tracker reads them:
+// the area fraction as the density, v~_z as the velocity.
+FrontProfiles frontProfiles(const PhaseFields& fields, const std::vector<double>& z);
+
 // The front at one phase.
 struct FrontCrossing {
   bool found = false;
@@ -69,6 +79,10 @@ struct TrackedFront {
   double speed_lower_bound = 0;      // m/s, when unresolved (fewer than min_points phases)
   bool resolved = false;
   double jump_speed = 0, jump_speed_spread = 0;  // mean and std of the Rankine-Hugoniot speeds
+  // An impact that crossed the packed bottom of a deep layer within one phase is first seen
+  // high above the bottom: the height it crossed in that phase (m) and the speed that takes,
+  // (that height) / dt (m/s), a lower bound; 0 and NaN for a front first seen at the bottom.
+  double bulk_crossing = 0, bulk_speed_lower_bound = 0;
   // Block bootstrap (trackWithBootstrap): std of the speed over resamples, and the share of
   // resamples in which this episode was found.
   double bootstrap_error = 0, bootstrap_found = 0;

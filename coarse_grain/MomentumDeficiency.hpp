@@ -23,4 +23,22 @@ struct Deficiency {
 Deficiency momentumDeficiency(const PhaseFields& dry, const PhaseFields& wet,
                               const std::vector<bool>& select = {}, double min_rms = 1e-3);
 
+// The ratio as the studies take it from two layers' profiles. Rows where either layer's
+// pooled area fraction is below `min_area_fraction` are left out (a dilute row's RMS is a few
+// particles'), and the dry layer is read `dry_shift` phases after the wet one (0: the same
+// plate phase, the paper's definition; a shift aligns the two layers' impacts instead).
+struct DeficiencyOptions {
+  std::vector<bool> select;  // as above
+  double min_rms = 1e-3;     // m/s, as above
+  double min_area_fraction = 0;
+  int dry_shift = 0;
+};
+
+// `dry` and `wet` are the pooled profiles (their area fractions decide the rows); the RMS(v_x)
+// compared is theirs, or that of `dry_block` and `wet_block` (one block of cycles of each).
+Deficiency momentumDeficiency(const PhaseFields& dry, const PhaseFields& wet,
+                              const DeficiencyOptions& options,
+                              const PhaseFields* dry_block = nullptr,
+                              const PhaseFields* wet_block = nullptr);
+
 }  // namespace granwave

@@ -33,10 +33,10 @@ PeriodResult detectPeriod(const std::vector<double>& height, int discard_cycles,
                           const PeriodOptions& options = {});
 
 // The period of a whole run: the one rule every command uses (simulate's summary, simulate
-// --fields, fields, and through their files the studies), so a run has one period. Before
-// issue 15 `simulate` left out a fifth of the run and `fields` the steady-state detector's
-// transient; on a bistable layer the two windows could give 2T and 1T for the same run. The
-// transient left out is now the larger of the two (at least 3 cycles).
+// --fields, fields, and through their files the studies), so a run has one period. Two rules
+// disagree on a bistable layer: leaving out a fifth of the run or only the steady-state
+// detector's transient, the two windows can give 2T and 1T for the same run. The transient left
+// out is therefore the larger of the two (at least 3 cycles).
 struct RunPeriod {
   PeriodResult result;
   int discarded = 0;  // leading cycles left out

@@ -29,6 +29,7 @@
 // sequence; Geyer, Stat. Sci. 7, 473 (1992)); a series that never switches gives no estimate of
 // tau, and n_eff = 1 is taken (one observation of one state). The interval is Wilson's 95 %
 // score interval with n_eff (Wilson, JASA 22, 209 (1927)).
+#include <algorithm>
 #include <complex>
 #include <vector>
 
@@ -66,6 +67,11 @@ struct PeriodDoublingSeries {
   double effective_windows = 0;          // n_eff
   int switches = 0;                      // state changes between consecutive windows
 };
+
+// Windows in the period-2 state.
+inline int period2Windows(const PeriodDoublingSeries& s) {
+  return static_cast<int>(std::count(s.period2.begin(), s.period2.end(), 1));
+}
 
 // `com_height`: M samples per cycle from a cycle boundary; the first `discard_cycles` cycles
 // (rounded up to even) are left out and the windows follow on, an incomplete last window left

@@ -29,7 +29,7 @@
 // r_j(c) and N_j the neighbours of j at cycle c (centre distance below neighbour_cutoff;
 // without neighbours, against the whole layer's mean), M = <delta_j> in d.
 //
-// Why bond survival and not M (issue 6, measured on the stability grid; docs/classification.md).
+// Why bond survival and not M (measured on the stability grid; docs/classification.md).
 //   The earlier rule called a layer liquid-like when M > 0.15 d, a dynamic Lindemann
 //   criterion. On the paper's scenes M(L) over L cycles grows like sqrt(L) in every state,
 //   also in layers with <|psi6|> = 0.95 that keep 95 % of their bonds over 15 cycles: one

@@ -264,6 +264,7 @@ void EdSimulation::doWall(int i, WallId wall) {
         0.5 * m * ((c.v.x - vw.x) * (c.v.x - vw.x) + (c.v.z - vw.z) * (c.v.z - vw.z)) +
         0.5 * inertia * c.w * c.w;
     obs_.dissipated_energy += rel_before - rel_after;
+    obs_.wall_dissipated_energy += rel_before - rel_after;
     if (wall == kBottom) bottom_impulse_ += m * (c.v.z - s.vz);
     s.vx = c.v.x;
     s.vz = c.v.z;
@@ -303,6 +304,7 @@ void EdSimulation::startRiding(int i, WallId wall) {
   // The residual normal motion (at most rest_velocity) is absorbed: count it as loss.
   const double after = particleEnergy(s);
   obs_.dissipated_energy += before - after;
+  obs_.wall_dissipated_energy += before - after;
   ++obs_.collisions.rests;
 }
 

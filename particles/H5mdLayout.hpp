@@ -68,12 +68,14 @@ inline const std::string kPairImpacts = "/granwave/pair_impacts";
 // Observables chunk: 1024 records (8 KiB of doubles), written a chunk at a time.
 inline constexpr std::size_t kObservableChunk = 1024;
 
-// A real-valued observable: /observables/<name>/value is double [records].
+// A real-valued observable: /observables/<name>/value is double [records]. An observable
+// added after files were written is `optional`: a file without it reads as NaN.
 struct RealObservable {
   const char* name;
   const char* unit;
   double (*get)(const Snapshot&);
   void (*set)(Snapshot&, double);
+  bool optional = false;
 };
 
 // A counter: /observables/<name>/value is uint64 [records], unit "1".
@@ -89,7 +91,7 @@ struct CountObservable {
                  [](const Snapshot& s) { return s.obs.field; },      \
                  [](Snapshot& s, double v) { s.obs.field = v; }}
 // clang-format on
-inline constexpr std::array<RealObservable, 10> kRealObservables{
+inline constexpr std::array<RealObservable, 11> kRealObservables{
     GRANWAVE_REAL(center_of_mass_height, "m"),
     GRANWAVE_REAL(kinetic_energy, "J"),
     GRANWAVE_REAL(rotational_energy, "J"),
@@ -101,6 +103,9 @@ inline constexpr std::array<RealObservable, 10> kRealObservables{
     GRANWAVE_REAL(pair_impact_loss, "J"),
     RealObservable{"plate_height", "m", [](const Snapshot& s) { return s.plate_height; },
                    [](Snapshot& s, double v) { s.plate_height = v; }},
+    RealObservable{"wall_dissipated_energy", "J",
+                   [](const Snapshot& s) { return s.obs.wall_dissipated_energy; },
+                   [](Snapshot& s, double v) { s.obs.wall_dissipated_energy = v; }, true},
 };
 #undef GRANWAVE_REAL
 

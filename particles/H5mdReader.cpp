@@ -1,6 +1,7 @@
 #include "particles/H5mdReader.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "h5/File.hpp"
@@ -114,7 +115,9 @@ void H5mdReader::State::checkObservables() {
     const std::string group = h5md::observableGroup(name);
     requireSameCount(file, group, checkElement(file, group, {}).count, records, first);
   };
-  for (const auto& observable : h5md::kRealObservables) check(observable.name);
+  for (const auto& observable : h5md::kRealObservables)
+    if (!observable.optional || file.exists(h5md::observableGroup(observable.name)))
+      check(observable.name);
   for (const auto& observable : h5md::kCountObservables) check(observable.name);
   const std::size_t kinds = h5md::kCollisionColumns.size();
   requireSameCount(file, h5md::kCollisions, checkElement(file, h5md::kCollisions, {kinds}).count,
@@ -233,7 +236,9 @@ Snapshot H5mdReader::frame(std::size_t i) const {
     const std::size_t r = static_cast<std::size_t>(found - steps.begin());
     for (const auto& observable : h5md::kRealObservables) {
       const std::string value = h5md::observableGroup(observable.name) + "/value";
-      observable.set(snapshot, s.file.readRows<double>(value, r, 1).front());
+      observable.set(snapshot, observable.optional && !s.file.exists(value)
+                                   ? std::numeric_limits<double>::quiet_NaN()
+                                   : s.file.readRows<double>(value, r, 1).front());
     }
     for (const auto& observable : h5md::kCountObservables) {
       const std::string value = h5md::observableGroup(observable.name) + "/value";

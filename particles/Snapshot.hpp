@@ -20,8 +20,11 @@ struct Observables {
   double rotational_energy = 0;      // J
   double potential_energy = 0;       // J, m g z summed
   double dissipated_energy = 0;      // J, cumulative loss in collisions (partner/wall frame)
-  double wall_work = 0;              // J, cumulative work done by moving walls
-  double pressure = 0;               // Pa m (2D), collisional+kinetic, periodic boxes only
+  // J, the part of dissipated_energy lost in collisions with the plate and the lid, and in
+  // coming to rest on them (the energy budget of the layer: docs/physics.md).
+  double wall_dissipated_energy = 0;
+  double wall_work = 0;  // J, cumulative work done by moving walls
+  double pressure = 0;   // Pa m (2D), collisional+kinetic, periodic boxes only
   // Cumulative normal impact energy (m/4) v_n^2 of the pair collisions that used the
   // restitution law (TC-elastic ones excluded), and its part lost, (m/4) (1 - e_n^2) v_n^2.
   // Their ratio is the energy-weighted <1 - e_n^2> of the run: e_eff^2 = 1 - loss/impact,

@@ -12,15 +12,22 @@ namespace {
 // it silently; these sizes make that a compile error.
 static_assert(sizeof(ParticleState) == 88, "ParticleState changed: update StateArchive");
 static_assert(sizeof(Event) == 24, "Event changed: update StateArchive");
-static_assert(sizeof(Observables) == 9 * sizeof(double) + 5 * sizeof(std::uint64_t),
+static_assert(sizeof(Observables) == 10 * sizeof(double) + 5 * sizeof(std::uint64_t),
               "Observables changed: update StateArchive");
 
-constexpr std::size_t kObservableReals = 9, kObservableCounts = 5;
+constexpr std::size_t kObservableReals = 10, kObservableCounts = 5;
 
 std::vector<double> realsOf(const Observables& o) {
-  return {o.center_of_mass_height, o.kinetic_energy, o.rotational_energy, o.potential_energy,
-          o.dissipated_energy,     o.wall_work,      o.pressure,          o.pair_impact_energy,
-          o.pair_impact_loss};
+  return {o.center_of_mass_height,
+          o.kinetic_energy,
+          o.rotational_energy,
+          o.potential_energy,
+          o.dissipated_energy,
+          o.wall_work,
+          o.pressure,
+          o.pair_impact_energy,
+          o.pair_impact_loss,
+          o.wall_dissipated_energy};
 }
 
 std::vector<std::uint64_t> countsOf(const Observables& o) {
@@ -39,6 +46,7 @@ Observables observablesFrom(const double* r, const std::uint64_t* c) {
   o.pressure = r[6];
   o.pair_impact_energy = r[7];
   o.pair_impact_loss = r[8];
+  o.wall_dissipated_energy = r[9];
   o.collisions.pair = c[0];
   o.collisions.wall = c[1];
   o.collisions.tc_elastic = c[2];

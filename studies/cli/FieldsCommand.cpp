@@ -4,18 +4,14 @@
 
 #include <CLI/CLI.hpp>
 #include <filesystem>
-#include <optional>
 #include <stdexcept>
 
 #include "coarse_grain/FieldsFile.hpp"
-#include "coarse_grain/PeriodDetector.hpp"
-#include "coarse_grain/SteadyStateDetector.hpp"
 #include "files/OutputPath.hpp"
-#include "particles/H5mdReader.hpp"
-#include "scene/SceneParser.hpp"
-#include "studies/cli/FieldsSetup.hpp"
 #include "studies/cli/OptionChecks.hpp"
-#include "studies/cli/RunSummary.hpp"
+#include "studies/particle_run/FieldsSetup.hpp"
+#include "studies/particle_run/RunFileFields.hpp"
+#include "studies/particle_run/RunSummary.hpp"
 
 namespace granwave {
 
@@ -60,75 +56,24 @@ void addFieldsCommand(CLI::App& app, FieldsOptions& opt) {
 }
 
 int runFields(const FieldsOptions& opt) {
-  const int period_choice = parseChoice(opt.period, "--period", 1, 4);
-  const int discard_choice = parseChoice(opt.discard, "--discard", 0, 1000000);
+  RunFileFieldsOptions fields;
+  fields.period = parseChoice(opt.period, "--period", 1, 4);
+  fields.discard = parseChoice(opt.discard, "--discard", 0, 1000000);
+  fields.blocks = opt.blocks;
+  fields.front_threshold = opt.front_threshold;
+  fields.state_fields = opt.state_fields;
   std::string out = opt.output;
   if (out.empty())
     out = std::filesystem::path(opt.run_path).replace_extension(".fields.h5").string();
   files::requireDistinct({{"run file", opt.run_path}},
                          {{"fields file", out}, {"fields sidecar", xdmfSidecarPath(out)}});
-  const H5mdReader run(opt.run_path);
-  const Scene scene = parseSceneString(run.sceneToml(), {}, opt.run_path + ":/parameters/scene");
-  if (scene.drive.frequency <= 0)
-    throw std::runtime_error(opt.run_path + ": phase-averaged fields need a driven scene");
-  if (run.frameCount() != run.recordCount())
-    throw std::runtime_error(fmt::format(
-        "{}: fields need a trajectory frame at every record ({} frames, {} records); simulate "
-        "with run.trajectory_stride = 1, or use simulate --fields",
-        opt.run_path, run.frameCount(), run.recordCount()));
-  if (!run.completed())
-    fmt::print(stderr, "granwave: {} is an interrupted run; using what it holds\n", opt.run_path);
-
-  const int M = scene.run.phases_per_cycle;
-  const std::vector<double> com = run.observable("center_of_mass_height").value;
-  int discard = discard_choice;
-  if (discard < 0) {
-    discard = steadyCycles(com, M);
-    if (discard < 0)
-      throw std::runtime_error(opt.run_path +
-                               ": the layer never became steady (run longer, or give --discard)");
-  }
-  // The run's period by the rule `simulate` uses (runPeriod), not over this command's
-  // window, so a run has one period.
-  int layer_period = 0;
-  PeriodDoublingSeries period_doubling;
-  try {
-    const RunPeriod rp = runPeriod(com, M);
-    layer_period = rp.result.period;
-    period_doubling = periodDoublingSeries(com, M, rp.discarded);
-  } catch (const std::invalid_argument&) {
-  }
-  int P = period_choice;
-  if (P < 0) P = layer_period >= 1 && layer_period <= 4 ? layer_period : 2;
-
-  PhaseAveragerConfig cfg = phaseAveragerConfig(scene, P, opt.blocks, discard);
-  cfg.total_cycles = static_cast<int>(run.recordCount() / M);
-  PhaseAverager averager(cfg);
-  std::optional<StatePhaseAverager> states;
-  if (opt.state_fields) states.emplace(cfg);
-  PatternSampler patterns({M});
-  SurfaceRecorder surface(surfaceRecorderConfig(scene));
-  for (std::size_t i = 0; i < run.frameCount(); ++i) {
-    const Snapshot s = run.frame(i);
-    averager.observe(s);
-    if (states) states->observe(s);
-    patterns.observe(s);
-    surface.observe(s);
-  }
-
-  FrontOptions fronts;
-  fronts.threshold = opt.front_threshold;
-  FieldsAnalysis a = analyseFields(
-      averager, fieldsContext(scene, opt.run_path, run.sceneToml(), layer_period), fronts);
-  a.context.period_doubling = period_doubling;
-  if (states) addStateFields(a, *states);
-  a.patterns = classifyPatterns(patterns, scene.container.width, scene.container.height,
-                                scene.particles.diameter, scene.container.periodic_x);
-  a.surface = surfaceWaves(surface, averager);
+  const FieldsAnalysis a = fieldsOfRunFile(opt.run_path, fields);
   writeFieldsFile(out, a);
   fmt::print("run             {}\n", opt.run_path);
-  if (layer_period > 0) fmt::print("layer period    {}T (centre of mass)\n", layer_period);
-  if (!period_doubling.period2.empty()) fmt::print("{}", formatPeriodDoubling(period_doubling));
+  if (a.context.layer_period > 0)
+    fmt::print("layer period    {}T (centre of mass)\n", a.context.layer_period);
+  if (!a.context.period_doubling.period2.empty())
+    fmt::print("{}", formatPeriodDoubling(a.context.period_doubling));
   fmt::print("{}", formatFieldsSummary(a));
   fmt::print("output          {} (+ {})\n", out, xdmfSidecarPath(out));
   return 0;

@@ -3,8 +3,8 @@
 // so that no study and nothing below the command line depends on another study.
 #include <memory>
 
-#include "studies/framework/Study.hpp"
-#include "studies/framework/StudyFile.hpp"
+#include "studies/contract/Study.hpp"
+#include "studies/contract/StudyFile.hpp"
 
 namespace granwave {
 

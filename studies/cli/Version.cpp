@@ -2,7 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "studies/framework/InstalledFiles.hpp"
+#include "studies/installation/InstalledFiles.hpp"
 
 namespace granwave {
 

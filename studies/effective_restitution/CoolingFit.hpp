@@ -11,7 +11,7 @@
 // up as e_eff changing from one range to the next.
 #include <vector>
 
-#include "studies/framework/Measurement.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

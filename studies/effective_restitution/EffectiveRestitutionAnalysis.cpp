@@ -7,8 +7,10 @@
 #include <numbers>
 #include <optional>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 
@@ -62,12 +64,14 @@ double theoryAt(const hydro::RestitutionClosure& law, double theta) {
 
 // The layer's area-fraction weighted temperature over the window and its lowest and highest
 // value over the phases, T / T0; false if the fields hold no particles.
-bool layerTemperature(const ParticleFields& p, double& mean, double& low, double& high) {
+bool layerTemperature(const FieldsRecord& r, double& mean, double& low, double& high) {
+  const PhaseProfiles& p = r.profiles;
   double w_all = 0, wt_all = 0, lo = 1e300, hi = 0;
-  for (int k = 0; k < p.phases; ++k) {
+  for (int k = 0; k < p.phases(); ++k) {
     double w = 0, wt = 0;
-    for (int j = 0; j < p.nz; ++j) {
-      const double a = p.at(p.area_fraction, k, j), T = p.at(p.temperature, k, j);
+    for (int j = 0; j < p.rows(); ++j) {
+      const double a = p.at(p.pooled.profile_area_fraction, k, j);
+      const double T = p.at(p.pooled.profile_temperature, k, j);
       if (std::isfinite(a) && std::isfinite(T)) {
         w += a;
         wt += a * T;
@@ -81,24 +85,24 @@ bool layerTemperature(const ParticleFields& p, double& mean, double& low, double
     wt_all += wt;
   }
   if (!(w_all > 0 && hi > 0)) return false;
-  mean = wt_all / w_all / p.T0;
-  low = lo / p.T0;
-  high = hi / p.T0;
+  mean = wt_all / w_all / r.context.T0;
+  low = lo / r.context.T0;
+  high = hi / r.context.T0;
   return true;
 }
 
 // (2) Collision statistics and the layer's temperature, from the driven runs; returns the
 // fields of the first finished seed (for the hydro fit).
-std::optional<ParticleFields> drivenEstimates(const EffectiveRestitutionConfig& c,
-                                              const RunSet& runs, int law, LawRestitution& out) {
+std::optional<FieldsRecord> drivenEstimates(const EffectiveRestitutionConfig& c, const RunSet& runs,
+                                            int law, LawRestitution& out) {
   std::vector<Measurement> stats;
   std::vector<double> t_layer, t_lo, t_hi;
-  std::optional<ParticleFields> fields;
+  std::optional<FieldsRecord> fields;
   for (int seed : c.seeds) {
     const RunRecord& r = runs.get(EffectiveRestitutionConfig::drivenLabel(law, seed));
     if (!r.ok) continue;
     stats.push_back(collisionStatistics(readRunObservables(r.runPath()), c.blocks));
-    ParticleFields p = readParticleFields(r.fieldsPath());
+    FieldsRecord p = readFieldsFile(r.fieldsPath());
     double mean = 0, low = 0, high = 0;
     if (layerTemperature(p, mean, low, high)) {
       t_layer.push_back(mean);
@@ -145,21 +149,20 @@ CoolingRun coolingRun(const EffectiveRestitutionConfig& c, const RunSet& runs, i
 }
 
 // The block values of the area fraction at phase k/M of every cycle of the window, row j.
-std::vector<double> blockValues(const ParticleFields& p, int k, int j) {
-  const int M = p.phases / p.cycles_per_window, Z = p.nz;
+std::vector<double> blockValues(const FieldsRecord& p, int k, int j) {
+  const int M = p.profiles.phases() / p.cycles_per_window;
   std::vector<double> out;
   for (int c = 0; c < p.cycles_per_window; ++c)
-    for (int b = 0; b < p.blocks; ++b)
-      out.push_back(
-          p.block_area_fraction[(static_cast<std::size_t>(b) * p.phases + c * M + k) * Z + j]);
+    for (const PhaseFields& b : p.profiles.blocks)
+      out.push_back(b.profile_area_fraction[b.row(c * M + k, j)]);
   return out;
 }
 
 // The particles' area fraction folded onto one cycle, [phase][row], with the variance of the
 // mean from the blocks (at least 1e-6).
-void foldedAreaFraction(const ParticleFields& p, std::vector<double>& mean,
+void foldedAreaFraction(const FieldsRecord& p, std::vector<double>& mean,
                         std::vector<double>& var) {
-  const int M = p.phases / p.cycles_per_window, Z = p.nz;
+  const int M = p.profiles.phases() / p.cycles_per_window, Z = p.profiles.rows();
   mean.assign(static_cast<std::size_t>(M) * Z, 0.0);
   var.assign(mean.size(), 0.0);
   for (int k = 0; k < M; ++k)
@@ -181,10 +184,11 @@ void foldedAreaFraction(const ParticleFields& p, std::vector<double>& mean,
 // chi^2 of one hydro run against the folded particle profile and the cells used; false if the
 // run's grid or phases do not match. Particle phase k/M pairs with hydro sample (k/M) = index
 // k - 1 (hydro samples k/M for k = 1..M).
-bool hydroChi2(const HydroFields& h, int M, int Z, const std::vector<double>& ed,
+bool hydroChi2(const HydroRunContent& run, int M, int Z, const std::vector<double>& ed,
                const std::vector<double>& var, double& chi2, int& used) {
-  const int cycles = h.periodic ? h.period : 2;
-  if (h.nz != Z || h.phases != cycles * M) return false;
+  const PhaseProfiles& h = run.lab;
+  const int cycles = run.windowCycles();
+  if (h.rows() != Z || h.phases() != cycles * M) return false;
   chi2 = 0;
   used = 0;  // cells where either side has particles (empty rows carry no information)
   for (int k = 0; k < M; ++k)
@@ -192,7 +196,7 @@ bool hydroChi2(const HydroFields& h, int M, int Z, const std::vector<double>& ed
       double v = 0;
       for (int c = 0; c < cycles; ++c) {
         const int hk = ((c * M + k - 1) % (cycles * M) + cycles * M) % (cycles * M);
-        const double a = h.at(h.area_fraction, hk, j);
+        const double a = h.at(h.pooled.profile_area_fraction, hk, j);
         v += std::isfinite(a) ? a : 0.0;
       }
       v /= cycles;
@@ -228,10 +232,9 @@ void parabolaMinimum(const std::vector<int>& dof, HydroFit& fit) {
 }
 
 // (3) Constant-e hydro fitted to the particles' area-fraction profiles, folded onto one cycle.
-HydroFit hydroFit(const EffectiveRestitutionConfig& c, const RunSet& runs,
-                  const ParticleFields& p) {
+HydroFit hydroFit(const EffectiveRestitutionConfig& c, const RunSet& runs, const FieldsRecord& p) {
   HydroFit fit;
-  const int M = p.phases / p.cycles_per_window, Z = p.nz;
+  const int M = p.profiles.phases() / p.cycles_per_window, Z = p.profiles.rows();
   std::vector<double> ed, var;
   foldedAreaFraction(p, ed, var);
   std::vector<int> dof;
@@ -240,7 +243,7 @@ HydroFit hydroFit(const EffectiveRestitutionConfig& c, const RunSet& runs,
     if (!r.ok) continue;
     double chi2 = 0;
     int used = 0;
-    if (!hydroChi2(readHydroFields(r.hydroPath()), M, Z, ed, var, chi2, used)) continue;
+    if (!hydroChi2(readHydroRunFile(r.hydroPath()), M, Z, ed, var, chi2, used)) continue;
     fit.e.push_back(e);
     fit.chi2.push_back(chi2);
     dof.push_back(std::max(1, used - 1));
@@ -272,7 +275,7 @@ LawRestitution analyseLaw(const EffectiveRestitutionConfig& c, const RunSet& run
     l.theory_temperature.push_back(x);
     l.theory_e.push_back(theoryAt(closure, x * s.theta0));
   }
-  const std::optional<ParticleFields> fields = drivenEstimates(c, runs, law, l);
+  const std::optional<FieldsRecord> fields = drivenEstimates(c, runs, law, l);
   l.theory_at_layer = theoryAt(closure, l.layer_temperature * s.theta0);
   l.theory_at_low = theoryAt(closure, l.layer_low * s.theta0);
   l.theory_at_high = theoryAt(closure, l.layer_high * s.theta0);

@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "h5/File.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/effective_restitution/CoolingFit.hpp"
 #include "studies/effective_restitution/EffectiveRestitutionStudy.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

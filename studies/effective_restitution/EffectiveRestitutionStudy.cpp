@@ -8,7 +8,7 @@
 #include "scene/SceneDerived.hpp"
 #include "studies/effective_restitution/EffectiveRestitutionAnalysis.hpp"
 #include "studies/effective_restitution/EffectiveRestitutionReport.hpp"
-#include "studies/framework/Measurement.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

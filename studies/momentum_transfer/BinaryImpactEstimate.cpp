@@ -8,8 +8,8 @@
 #include "particles/EdSimulation.hpp"
 #include "particles/H5mdLayout.hpp"
 #include "particles/PairImpactHistogram.hpp"
-#include "studies/framework/StudyResults.hpp"
-#include "studies/framework/StudyScenes.hpp"
+#include "studies/contract/StudyResults.hpp"
+#include "studies/contract/StudyScenes.hpp"
 
 namespace granwave {
 

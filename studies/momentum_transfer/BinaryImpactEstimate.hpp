@@ -17,9 +17,9 @@
 
 #include "h5/File.hpp"
 #include "particles/Restitution.hpp"
-#include "studies/framework/SeedResampling.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
+#include "studies/statistics/SeedResampling.hpp"
 
 namespace granwave {
 

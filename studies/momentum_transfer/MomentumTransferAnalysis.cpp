@@ -6,9 +6,9 @@
 #include <cmath>
 
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/ImpactFronts.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/FailureReason.hpp"
+#include "studies/contract/StudyResults.hpp"
+#include "studies/wave_analysis/ImpactFronts.hpp"
 
 namespace granwave {
 
@@ -38,32 +38,20 @@ double stdDev(const std::vector<double>& v) {
 }
 
 // A profile value: block < 0 the profile pooled over all cycles, else that block's.
-double value(const ParticleFields& p, bool rms, int block, int k, int j) {
-  if (block < 0) return p.at(rms ? p.rms_velocity_x : p.velocity_z, k, j);
-  const auto& b = rms ? p.block_rms_vx : p.block_velocity_z;
-  return b[(static_cast<std::size_t>(block) * p.phases + k) * p.nz + j];
+double value(const FieldsRecord& p, bool rms, int block, int k, int j) {
+  const PhaseFields& f = block < 0 ? p.profiles.pooled : p.profiles.blocks[block];
+  return (rms ? f.profile_rms_velocity_x : f.profile_velocity_z)[f.row(k, j)];
 }
 
 // r_x(z, t) of one seed from the pooled profiles (block < 0) or one block's. The dry layer is
 // read `shift` phases after the wet one (0: the same plate phase, the paper's definition); rows
 // where either layer's pooled area fraction is below min_af are left out.
-Deficiency ratioOf(const ParticleFields& dry, const ParticleFields& wet, int block, int shift,
+Deficiency ratioOf(const FieldsRecord& dry, const FieldsRecord& wet, int block, int shift,
                    double min_af, double min_rms, const std::vector<bool>& select) {
-  PhaseFields D, W;
-  D.phases = W.phases = wet.phases;
-  D.nz = W.nz = wet.nz;
-  const std::size_t n = static_cast<std::size_t>(wet.phases) * wet.nz;
-  D.profile_rms_velocity_x.assign(n, kNaN);
-  W.profile_rms_velocity_x.assign(n, kNaN);
-  for (int k = 0; k < wet.phases; ++k) {
-    const int kd = wrap(k + shift, wet.phases);
-    for (int j = 0; j < wet.nz; ++j) {
-      W.profile_rms_velocity_x[W.row(k, j)] = value(wet, true, block, k, j);
-      if (dry.at(dry.area_fraction, kd, j) >= min_af && wet.at(wet.area_fraction, k, j) >= min_af)
-        D.profile_rms_velocity_x[D.row(k, j)] = value(dry, true, block, kd, j);
-    }
-  }
-  return momentumDeficiency(D, W, select, min_rms);
+  const PhaseProfiles &d = dry.profiles, &w = wet.profiles;
+  return momentumDeficiency(d.pooled, w.pooled, {select, min_rms, min_af, shift},
+                            block < 0 ? nullptr : &d.blocks[block],
+                            block < 0 ? nullptr : &w.blocks[block]);
 }
 
 // Both runs of the seed and the onsets of their strong impact fronts; false if unusable.
@@ -77,31 +65,33 @@ bool readLayers(const MomentumTransferConfig& c, const RunSet& runs, SeedPair& p
                                shortReason(r.message));
       continue;
     }
-    p.layer[law] = readParticleFields(r.fieldsPath());
+    p.layer[law] = readFieldsFile(r.fieldsPath());
   }
   if (!p.failure.empty()) return false;
-  const ParticleFields& dry = *p.layer[0];
-  const ParticleFields& wet = *p.layer[1];
-  if (dry.phases != wet.phases || dry.nz != wet.nz ||
+  const FieldsRecord& dry = *p.layer[0];
+  const FieldsRecord& wet = *p.layer[1];
+  if (dry.profiles.phases() != wet.profiles.phases() ||
+      dry.profiles.rows() != wet.profiles.rows() ||
       dry.cycles_per_window != wet.cycles_per_window) {
     p.failure = "failed: the dry and wet fields have different phases or rows";
     return false;
   }
   p.blocks = std::min(dry.blocks, wet.blocks);
-  p.per_cycle = wet.cycles_per_window > 0 ? wet.phases / wet.cycles_per_window : wet.phases;
+  p.per_cycle = wet.cycles_per_window > 0 ? wet.profiles.phases() / wet.cycles_per_window
+                                          : wet.profiles.phases();
   for (int law = 0; law < kLaws; ++law) {
-    const ParticleFields& l = *p.layer[law];
-    const ImpactFronts imp = impactFronts(l.fronts);
+    const FieldsRecord& l = *p.layer[law];
+    const ImpactFronts imp = impactFronts(l.profiles);
     p.found[law] = imp.strong_start >= 0;
     p.onset[law] = p.found[law] ? imp.strong_start : c.profile_phase;
-    p.on[law] = l.phaseIndex(p.onset[law]);
+    p.on[law] = l.profiles.phaseIndex(p.onset[law]);
   }
   return true;
 }
 
 // The wave window: from the wet layer's onset for wave_duration.
 std::vector<bool> waveWindow(const MomentumTransferConfig& c, const SeedPair& p) {
-  const int phases = p.layer[1]->phases;
+  const int phases = p.layer[1]->profiles.phases();
   const int n_wave = std::max(1, static_cast<int>(std::lround(c.wave_duration * p.per_cycle)));
   std::vector<bool> select(phases, false);
   for (int i = 0; i < n_wave; ++i) select[wrap(p.on[1] + i, phases)] = true;
@@ -110,8 +100,8 @@ std::vector<bool> waveWindow(const MomentumTransferConfig& c, const SeedPair& p)
 
 // r_x over the wave window, pooled and (for the error) per block.
 void waveRatios(const MomentumTransferConfig& c, const std::vector<bool>& select, SeedPair& p) {
-  const ParticleFields& dry = *p.layer[0];
-  const ParticleFields& wet = *p.layer[1];
+  const FieldsRecord& dry = *p.layer[0];
+  const FieldsRecord& wet = *p.layer[1];
   auto wave = [&](int shift, double min_af, bool keep) {
     const Deficiency all = ratioOf(dry, wet, -1, shift, min_af, c.min_rms, select);
     std::vector<double> per_block;
@@ -131,13 +121,13 @@ void waveRatios(const MomentumTransferConfig& c, const std::vector<bool>& select
 // The (z, t) cells entering r~_x that are valid in every block of both layers; also the
 // fraction of the cells entering r~_x with r_x > 1.
 std::vector<std::pair<int, int>> cellsInEveryBlock(const std::vector<bool>& select, SeedPair& p) {
-  const ParticleFields& wet = *p.layer[1];
+  const FieldsRecord& wet = *p.layer[1];
   int above = 0, cells = 0;
   std::vector<std::pair<int, int>> used;
-  for (int k = 0; k < wet.phases; ++k) {
+  for (int k = 0; k < wet.profiles.phases(); ++k) {
     if (!select[k]) continue;
-    for (int j = 0; j < wet.nz; ++j) {
-      const double ratio = p.pooled.ratio[static_cast<std::size_t>(k) * wet.nz + j];
+    for (int j = 0; j < wet.profiles.rows(); ++j) {
+      const double ratio = p.pooled.ratio[static_cast<std::size_t>(k) * wet.profiles.rows() + j];
       if (!std::isfinite(ratio)) continue;
       ++cells;
       above += ratio > 1.0;
@@ -154,7 +144,7 @@ std::vector<std::pair<int, int>> cellsInEveryBlock(const std::vector<bool>& sele
 
 // RMS(v_x) of one layer over the cells, pooled and per block, and its split into flow and noise.
 void rmsDecomposition(const std::vector<std::pair<int, int>>& used, int law, SeedPair& p) {
-  const ParticleFields& l = *p.layer[law];
+  const FieldsRecord& l = *p.layer[law];
   std::vector<double> pooled, blocks(p.blocks, 0.0);
   double p2 = 0, b2 = 0;
   for (const auto& [k, j] : used) {
@@ -220,7 +210,7 @@ void waveMaps(MomentumTransferResults& a) {
     a.tau.push_back(static_cast<double>(offset) / a.per_cycle);
     std::vector<double> pooled, blocks;
     for (const SeedPair* p : ok) {
-      const int k = wrap(p->on[1] + offset, p->layer[1]->phases);
+      const int k = wrap(p->on[1] + offset, p->layer[1]->profiles.phases());
       pooled.push_back(p->pooled.row_mean[k]);
       for (const Deficiency& b : p->blocks_r) blocks.push_back(b.row_mean[k]);
     }
@@ -229,7 +219,7 @@ void waveMaps(MomentumTransferResults& a) {
     for (int j = 0; j < a.nz; ++j) {
       std::vector<double> v;
       for (const SeedPair* p : ok) {
-        const int k = wrap(p->on[1] + offset, p->layer[1]->phases);
+        const int k = wrap(p->on[1] + offset, p->layer[1]->profiles.phases());
         v.push_back(p->pooled.ratio[static_cast<std::size_t>(k) * a.nz + j]);
       }
       const double m = meanAndStandardError(v).value;
@@ -247,7 +237,7 @@ void waveMaps(MomentumTransferResults& a) {
     if (!p.failure.empty()) continue;
     for (int i = 0; i < n_tau; ++i)
       p.row_mean_around_wave.push_back(
-          p.pooled.row_mean[wrap(p.on[1] + i - a.n_margin, p.layer[1]->phases)]);
+          p.pooled.row_mean[wrap(p.on[1] + i - a.n_margin, p.layer[1]->profiles.phases())]);
   }
 }
 
@@ -256,11 +246,11 @@ void waveMaps(MomentumTransferResults& a) {
 LayerProfile layerProfile(const std::vector<const SeedPair*>& ok, const std::vector<int>& k,
                           int law, bool rms, double scale) {
   LayerProfile out;
-  const int nz = ok.front()->layer[law]->nz;
+  const int nz = ok.front()->layer[law]->profiles.rows();
   for (int j = 0; j < nz; ++j) {
     std::vector<double> pooled, blocks;
     for (std::size_t s = 0; s < ok.size(); ++s) {
-      const ParticleFields& p = *ok[s]->layer[law];
+      const FieldsRecord& p = *ok[s]->layer[law];
       pooled.push_back(value(p, rms, -1, k[s], j));
       for (int b = 0; b < ok[s]->blocks; ++b) blocks.push_back(value(p, rms, b, k[s], j));
     }
@@ -279,21 +269,21 @@ ImpactProfiles impactProfiles(const MomentumTransferConfig& c, const MomentumTra
   const std::vector<const SeedPair*> ok = a.ok();
   const double v0 = derive(c.scenes.base[1]).v0;
   ImpactProfiles out;
-  out.z = ok.front()->layer[1]->z;
+  out.z = ok.front()->layer[1]->profiles.z;
   std::vector<int> literal, stage[2];
   const int stage_shift =
       static_cast<int>(std::lround((c.profile_phase - kPaperOnset) * a.per_cycle));
   for (const SeedPair* p : ok) {
-    const ParticleFields& wet = *p->layer[1];
+    const FieldsRecord& wet = *p->layer[1];
     double best = c.profile_phase;
     for (int cyc = 1; cyc < wet.cycles_per_window; ++cyc)
       if (circularDistance(c.profile_phase + cyc, p->onset[1], wet.cycles_per_window) <
           circularDistance(best, p->onset[1], wet.cycles_per_window))
         best = c.profile_phase + cyc;
-    literal.push_back(wet.phaseIndex(best));
-    out.literal_phase.push_back(wet.phase[literal.back()]);
+    literal.push_back(wet.profiles.phaseIndex(best));
+    out.literal_phase.push_back(wet.profiles.phase[literal.back()]);
     for (int law = 0; law < kLaws; ++law)
-      stage[law].push_back(wrap(p->on[law] + stage_shift, p->layer[law]->phases));
+      stage[law].push_back(wrap(p->on[law] + stage_shift, p->layer[law]->profiles.phases()));
   }
   for (int law = 0; law < kLaws; ++law) {
     out.vz_literal[law] = layerProfile(ok, literal, law, false, 1 / v0);
@@ -320,7 +310,7 @@ void writeSeeds(h5::File& f, const MomentumTransferResults& a) {
       const std::string n = kLawNames[law];
       putValue(f, g, "impact_onset_" + n, p.onset[law]);
       putValue(f, g, "impact_front_found_" + n, p.found[law] ? 1 : 0);
-      putValue(f, g, "layer_period_" + n, p.layer[law]->layer_period);
+      putValue(f, g, "layer_period_" + n, p.layer[law]->context.layer_period);
       putMeasurement(f, g, "rms_velocity_x_" + n, p.rms[law]);
       putValue(f, g, "block_to_pooled_rms_" + n, p.block_ratio[law]);
       putValue(f, g, "noise_share_rms2_" + n, p.noise_share[law]);
@@ -334,7 +324,7 @@ void writeWave(h5::File& f, const MomentumTransferResults& a) {
   putSeries(f, g + "/time_since_wet_onset", a.tau, "T");
   putSeries(f, g + "/row_mean_r_x", a.row_mean, "1");
   putSeries(f, g + "/row_mean_r_x_error", a.row_error, "1");
-  putSeries(f, g + "/z", a.ok().front()->layer[1]->z, "m");
+  putSeries(f, g + "/z", a.ok().front()->layer[1]->profiles.z, "m");
   f.writeDataset(g + "/r_x", a.map,
                  {static_cast<std::size_t>(a.nz), static_cast<std::size_t>(a.tau.size())});
   f.writeStringAttribute(g + "/r_x", "unit", "1");
@@ -396,7 +386,7 @@ MomentumTransferResults analyseMomentumTransfer(const MomentumTransferConfig& c,
   const std::vector<const SeedPair*> ok = a.ok();
   if (ok.empty()) return a;
   a.per_cycle = ok.front()->per_cycle;
-  a.nz = ok.front()->layer[1]->nz;
+  a.nz = ok.front()->layer[1]->profiles.rows();
   a.n_wave = std::max(1, static_cast<int>(std::lround(c.wave_duration * a.per_cycle)));
   a.n_margin = static_cast<int>(std::lround(c.margin * a.per_cycle));
   combineSeeds(a);

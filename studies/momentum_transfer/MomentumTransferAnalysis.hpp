@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "coarse_grain/MomentumDeficiency.hpp"
 #include "h5/File.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/momentum_transfer/BinaryImpactEstimate.hpp"
 #include "studies/momentum_transfer/MomentumTransferStudy.hpp"
-#include "studies/run_files/RunOutputs.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 
@@ -28,7 +28,7 @@ struct SeedPair {
   int seed = 0;
   int other_window = 0;  // 0: the study's window; else the runs with this other window
   std::string failure;   // empty: both runs usable
-  std::optional<ParticleFields> layer[2];
+  std::optional<FieldsRecord> layer[2];
   double onset[2] = {NAN, NAN};  // t/T within the window
   bool found[2] = {false, false};
   int on[2] = {0, 0};  // phase index of the onset

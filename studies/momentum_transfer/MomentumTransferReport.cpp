@@ -189,13 +189,14 @@ Table layerTable(const Results& a, int blocks) {
       return p.found[law] ? formatNumber(p.onset[law])
                           : formatNumber(p.onset[law]) + " (no impact front; profile phase)";
     };
-    t.rows.push_back({std::to_string(p.seed),
-                      fmt::format("{} / {}", p.layer[0]->layer_period, p.layer[1]->layer_period),
-                      onset(0) + " / " + onset(1), format(scaled(p.rms[0], 1e3), 1),
-                      format(scaled(p.rms[1], 1e3), 1),
-                      formatNumber(p.block_ratio[0]) + " / " + formatNumber(p.block_ratio[1]),
-                      formatNumber(p.noise_share[0]) + " / " + formatNumber(p.noise_share[1]),
-                      formatNumber(p.above_one)});
+    t.rows.push_back(
+        {std::to_string(p.seed),
+         fmt::format("{} / {}", p.layer[0]->context.layer_period, p.layer[1]->context.layer_period),
+         onset(0) + " / " + onset(1), format(scaled(p.rms[0], 1e3), 1),
+         format(scaled(p.rms[1], 1e3), 1),
+         formatNumber(p.block_ratio[0]) + " / " + formatNumber(p.block_ratio[1]),
+         formatNumber(p.noise_share[0]) + " / " + formatNumber(p.noise_share[1]),
+         formatNumber(p.above_one)});
     for (int law = 0; law < kLaws; ++law) ratio[law].push_back(p.block_ratio[law]);
   }
   t.rows.push_back(
@@ -213,8 +214,8 @@ std::string perSeed(const Results& a, const std::function<std::string(const Seed
 
 std::string layerPeriods(const Results& a) {
   return perSeed(a, [](const SeedPair& p) {
-    return fmt::format("seed {}: {} / {}", p.seed, p.layer[0]->layer_period,
-                       p.layer[1]->layer_period);
+    return fmt::format("seed {}: {} / {}", p.seed, p.layer[0]->context.layer_period,
+                       p.layer[1]->context.layer_period);
   });
 }
 

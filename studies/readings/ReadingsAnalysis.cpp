@@ -7,12 +7,13 @@
 #include <numbers>
 #include <optional>
 
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/ImpactFronts.hpp"  // centerOfMassMinimumPhases
-#include "studies/framework/StudyResults.hpp"
-#include "studies/framework/VelocityFronts.hpp"
-#include "studies/framework/WaveMomentumRatio.hpp"
+#include "coarse_grain/FieldsReader.hpp"
+#include "studies/contract/FailureReason.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/run_files/RunOutputs.hpp"
+#include "studies/wave_analysis/ImpactFronts.hpp"  // centerOfMassMinimumPhases
+#include "studies/wave_analysis/VelocityFronts.hpp"
+#include "studies/wave_analysis/WaveMomentumRatio.hpp"
 
 namespace granwave {
 
@@ -105,8 +106,8 @@ Measurement phaseOverSeeds(const std::vector<double>& phases) {
 // What one law's runs at one drive point give, seed by seed.
 struct PointRuns {
   std::vector<LayerPatterns> patterns;
-  std::vector<std::optional<ParticleFields>> fields;  // wave point only
-  std::vector<RunObservables> observables;            // wave point only
+  std::vector<std::optional<FieldsRecord>> fields;  // wave point only
+  std::vector<RunObservables> observables;          // wave point only
 };
 
 PointRuns readPoint(const ReadingsConfig& c, const RunSet& runs, int r, int law,
@@ -123,7 +124,7 @@ PointRuns readPoint(const ReadingsConfig& c, const RunSet& runs, int r, int law,
     }
     out.patterns.push_back(readLayerPatterns(rec.fieldsPath()));
     if (!wave) continue;
-    out.fields.push_back(readParticleFields(rec.fieldsPath()));
+    out.fields.push_back(readFieldsFile(rec.fieldsPath()));
     out.observables.push_back(readRunObservables(rec.runPath()));
   }
   return out;
@@ -146,8 +147,9 @@ void waveLaw(const PointRuns& w, int law, ReadingOutcome& o) {
   std::vector<double> phases;
   for (const auto& f : w.fields) {
     if (!f) continue;
-    phases.push_back(meanPhase(centerOfMassMinimumPhases(*f, f->cycles_per_window)));
-    const int per_cycle = f->cycles_per_window > 0 ? f->phases / f->cycles_per_window : 0;
+    phases.push_back(meanPhase(centerOfMassMinimumPhases(f->profiles, f->cycles_per_window)));
+    const int per_cycle =
+        f->cycles_per_window > 0 ? f->profiles.phases() / f->cycles_per_window : 0;
     if (per_cycle > 0) o.phase_resolution = 1.0 / per_cycle;
   }
   o.minimum_phase[law] = phaseOverSeeds(phases);

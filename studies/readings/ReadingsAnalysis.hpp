@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "h5/File.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/readings/ReadingsStudy.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

@@ -6,9 +6,9 @@
 #include <set>
 
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/Measurement.hpp"
 #include "studies/readings/ReadingsAnalysis.hpp"
 #include "studies/readings/ReadingsReport.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The readings study (docs/studies.md; issue 15): the paper's text leaves the units of kappa
+// The readings study (docs/studies.md): the paper's text leaves the units of kappa
 // in e_dry = 1 - kappa v_n^(1/5), the meaning of its tangential "COR set to 1" (walls, TC
 // collisions) and the TC window open. Each reading is a set of scene options enumerated from
 // the text (never fitted); for each, dry and wet layers are run at the paper's checks with
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/framework/Study.hpp"
-#include "studies/framework/StudyScenes.hpp"
+#include "studies/contract/Study.hpp"
+#include "studies/contract/StudyScenes.hpp"
 
 namespace granwave {
 

@@ -3,7 +3,7 @@
 // run's own outcome. A study caches a run's outcome (codes 0-4: the same scene and build give
 // it again) but not a failure whose cause lies outside the run (a file that cannot be written,
 // a checkpoint that cannot be used, an interrupt): that run is tried again next time
-// (cli/OutsideFailure.hpp says which exceptions those are).
+// (particle_run/OutsideFailure.hpp says which exceptions those are).
 namespace granwave {
 
 enum ExitCode : int {

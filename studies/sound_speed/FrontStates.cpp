@@ -4,37 +4,36 @@
 
 namespace granwave {
 
-std::vector<int> episodePhases(const Profiles& p, int first) {
+std::vector<int> episodePhases(const PhaseProfiles& p, int first) {
   std::vector<int> out;
-  for (int k = 0; k < p.phases; ++k) {
-    const int ph = (first + k) % p.phases;
-    if (!std::isfinite(p.front[ph])) break;
+  for (int k = 0; k < p.phases(); ++k) {
+    const int ph = (first + k) % p.phases();
+    if (!std::isfinite(p.front_height[ph])) break;
     out.push_back(ph);
   }
   return out;
 }
 
-FrontStates frontStates(const ParticleFields& p, const std::vector<int>& phases, int rows, int gap,
+FrontStates frontStates(const PhaseProfiles& p, const std::vector<int>& phases, int rows, int gap,
                         int block) {
-  auto value = [&](const std::vector<double>& pooled, const std::vector<double>& blocks, int ph,
-                   int j) {
-    if (block < 0) return p.at(pooled, ph, j);
-    return blocks[(static_cast<std::size_t>(block) * p.phases + ph) * p.nz + j];
+  const PhaseFields& f = block < 0 ? p.pooled : p.blocks[static_cast<std::size_t>(block)];
+  auto value = [&](const std::vector<double>& profile, int ph, int j) {
+    return profile[f.row(ph, j)];
   };
   FrontStates s;
   double n_a = 0, n_b = 0;
   for (int ph : phases) {
     const double dz = p.z[1] - p.z[0];
-    const int jf = static_cast<int>(std::lround((p.front[ph] - p.z[0]) / dz));
+    const int jf = static_cast<int>(std::lround((p.front_height[ph] - p.z[0]) / dz));
     for (int side = 0; side < 2; ++side) {
       double w = 0, wT = 0, wu = 0, sum_nu = 0;
       int count = 0;
       for (int r = 0; r < rows; ++r) {
         const int j = side == 0 ? jf + gap + r : jf - gap - r;
-        if (j < 0 || j >= p.nz) continue;
-        const double a = value(p.area_fraction, p.block_area_fraction, ph, j);
-        const double T = value(p.temperature, p.block_temperature, ph, j);
-        const double u = value(p.velocity_z, p.block_velocity_z, ph, j);
+        if (j < 0 || j >= p.rows()) continue;
+        const double a = value(f.profile_area_fraction, ph, j);
+        const double T = value(f.profile_temperature, ph, j);
+        const double u = value(f.profile_velocity_z, ph, j);
         if (!(std::isfinite(a) && std::isfinite(T) && std::isfinite(u)) || a <= 0) continue;
         w += a;
         wT += a * T;

@@ -4,7 +4,7 @@
 // row on either side, area-fraction weighted, averaged over the phases of the front's episode.
 #include <vector>
 
-#include "studies/run_files/RunOutputs.hpp"
+#include "coarse_grain/PhaseProfiles.hpp"
 
 namespace granwave {
 
@@ -20,8 +20,8 @@ struct FrontStates {
 
 // Phases of the episode starting at `first_phase` (index): consecutive phases (cyclic) with a
 // front height. `field_block` < 0 uses the pooled profiles, else that block's.
-std::vector<int> episodePhases(const Profiles& p, int first_phase);
-FrontStates frontStates(const ParticleFields& p, const std::vector<int>& phases, int rows, int gap,
+std::vector<int> episodePhases(const PhaseProfiles& p, int first_phase);
+FrontStates frontStates(const PhaseProfiles& p, const std::vector<int>& phases, int rows, int gap,
                         int block = -1);
 
 }  // namespace granwave

@@ -4,10 +4,12 @@
 
 #include <cmath>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "hydro/ShockRelations.hpp"
 #include "hydro/SoundSpeed.hpp"
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
 
 namespace granwave {
 
@@ -38,12 +40,14 @@ std::array<double, kTheories> predictions(const FrontStates& s, double mass,
 double spread(const std::vector<double>& v) { return meanAndStandardError(v).error; }
 
 // One impact front of a run: its states, w, and each theory with its spread over the blocks.
-FrontComparison compare(const SoundSpeedConfig& c, const std::string& run, const ParticleFields& p,
-                        const Front& fr, double mass, const hydro::RestitutionClosure& closure) {
+FrontComparison compare(const SoundSpeedConfig& c, const std::string& run,
+                        const FieldsRecord& fields, const FrontEpisode& fr, double mass,
+                        const hydro::RestitutionClosure& closure) {
+  const PhaseProfiles& p = fields.profiles;
   FrontComparison cmp;
   cmp.run = run;
-  cmp.start = fr.start;
-  cmp.T0 = p.T0;
+  cmp.start = p.start(fr);
+  cmp.T0 = fields.context.T0;
   const std::vector<int> phases = episodePhases(p, fr.first_phase);
   cmp.states = frontStates(p, phases, c.rows, c.gap);
   if (!cmp.states.ahead.valid || !cmp.states.behind.valid) {
@@ -52,14 +56,14 @@ FrontComparison compare(const SoundSpeedConfig& c, const std::string& run, const
   }
   std::vector<std::array<double, kTheories>> per_block;
   std::vector<double> ua_block;
-  for (int b = 0; b < p.blocks; ++b) {
+  for (int b = 0; b < fields.blocks; ++b) {
     const FrontStates sb = frontStates(p, phases, c.rows, c.gap, b);
     per_block.push_back(predictions(sb, mass, closure));
     ua_block.push_back(sb.ahead.valid ? sb.ahead.uz : NAN);
   }
   const double ua_err = spread(ua_block);
   cmp.w = {fr.speed - cmp.states.ahead.uz,
-           std::hypot(fr.error, std::isfinite(ua_err) ? ua_err : 0.0)};
+           std::hypot(fr.speed_error, std::isfinite(ua_err) ? ua_err : 0.0)};
   const auto pred = predictions(cmp.states, mass, closure);
   for (int k = 0; k < kTheories; ++k) {
     std::vector<double> vb;
@@ -101,8 +105,8 @@ void compareRun(const SoundSpeedConfig& c, const RunSet& runs, const std::string
   }
   const hydro::RestitutionClosure closure = restitutionClosure(c.scenes.base[law]);
   const double mass = derive(c.scenes.base[law]).mass;
-  const ParticleFields p = readParticleFields(run.fieldsPath());
-  for (const Front& fr : p.fronts) {
+  const FieldsRecord p = readFieldsFile(run.fieldsPath());
+  for (const FrontEpisode& fr : p.profiles.fronts) {
     if (!fr.from_impact || !std::isfinite(fr.speed)) continue;
     r.fronts.push_back(compare(c, name, p, fr, mass, closure));
     if (r.fronts.back().outcome == FrontComparison::Outcome::Compared) tally(r.fronts.back(), r);

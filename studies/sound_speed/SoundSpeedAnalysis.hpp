@@ -7,10 +7,10 @@
 #include <vector>
 
 #include "h5/File.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/sound_speed/FrontStates.hpp"
 #include "studies/sound_speed/SoundSpeedStudy.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

@@ -2,9 +2,9 @@
 
 #include <fmt/format.h>
 
-#include "studies/framework/Measurement.hpp"
 #include "studies/sound_speed/SoundSpeedAnalysis.hpp"
 #include "studies/sound_speed/SoundSpeedReport.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

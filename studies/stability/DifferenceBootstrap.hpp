@@ -12,9 +12,9 @@
 #include <string>
 #include <vector>
 
-#include "studies/framework/SeedResampling.hpp"
 #include "studies/stability/SeedBootstrap.hpp"
 #include "studies/stability/StabilityGrid.hpp"
+#include "studies/statistics/SeedResampling.hpp"
 
 namespace granwave {
 

@@ -1,7 +1,7 @@
 #include "studies/stability/SeedBootstrap.hpp"
 
-#include "studies/framework/SeedResampling.hpp"
 #include "studies/stability/StabilityFeatures.hpp"
+#include "studies/statistics/SeedResampling.hpp"
 
 namespace granwave {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/run_files/RunOutputs.hpp"
+#include "coarse_grain/FieldsReader.hpp"
 #include "studies/stability/StabilityGrid.hpp"
 
 namespace granwave {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/run_files/RunOutputs.hpp"
+#include "coarse_grain/FieldsReader.hpp"
 
 namespace granwave {
 

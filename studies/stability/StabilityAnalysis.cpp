@@ -6,7 +6,7 @@
 #include <cmath>
 #include <optional>
 
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 
 namespace granwave {
@@ -57,9 +57,9 @@ HydroPoint hydroPoint(const StabilityConfig& c, const RunSet& runs, int law, dou
     h.failure = r.message;
     return h;
   }
-  const HydroFields hf = readHydroFields(r.hydroPath());
+  const HydroRunContent hf = readHydroRunFile(r.hydroPath());
   h.periodic = hf.periodic;
-  h.period = hf.period;
+  h.period = static_cast<int>(hf.period);
   h.regime = hf.regime;
   return h;
 }

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "h5/File.hpp"
-#include "studies/framework/Study.hpp"
+#include "studies/contract/Study.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 #include "studies/stability/DifferenceBootstrap.hpp"
 #include "studies/stability/SeedBootstrap.hpp"

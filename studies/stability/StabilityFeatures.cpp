@@ -5,8 +5,8 @@
 #include <algorithm>
 #include <functional>
 
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/StudyScenes.hpp"
+#include "studies/contract/StudyScenes.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

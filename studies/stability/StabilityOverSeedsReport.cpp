@@ -4,7 +4,7 @@
 
 #include <map>
 
-#include "studies/framework/Measurement.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

@@ -4,9 +4,9 @@
 
 #include <algorithm>
 
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/Measurement.hpp"
+#include "studies/contract/FailureReason.hpp"
 #include "studies/stability/StabilityOverSeedsReport.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 

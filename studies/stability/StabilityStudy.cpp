@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <set>
 
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/SeedResampling.hpp"
 #include "studies/stability/StabilityAnalysis.hpp"
 #include "studies/stability/StabilityReport.hpp"
+#include "studies/statistics/Measurement.hpp"
+#include "studies/statistics/SeedResampling.hpp"
 
 namespace granwave {
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/framework/Study.hpp"
-#include "studies/framework/StudyScenes.hpp"
+#include "studies/contract/Study.hpp"
+#include "studies/contract/StudyScenes.hpp"
 
 namespace granwave {
 

@@ -2,11 +2,10 @@
 
 #include <cmath>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "coarse_grain/SurfaceWavesFile.hpp"
-#include "h5/File.hpp"
-#include "particles/H5mdLayout.hpp"
-#include "studies/framework/Measurement.hpp"
 #include "studies/run_files/RunOutputs.hpp"
+#include "studies/statistics/Measurement.hpp"
 
 namespace granwave {
 
@@ -14,13 +13,14 @@ namespace {
 
 // RMS(v_x) of the phase-averaged fields over the rows of area fraction >= 0.1 at every phase:
 // the paper's order parameter for the layer as a whole.
-double layerRmsVx(const ParticleFields& p) {
+double layerRmsVx(const PhaseProfiles& p) {
+  const PhaseFields& f = p.pooled;
   double sum = 0;
   int n = 0;
-  for (int k = 0; k < p.phases; ++k)
-    for (int j = 0; j < p.nz; ++j) {
-      const double v = p.at(p.rms_velocity_x, k, j);
-      if (p.at(p.area_fraction, k, j) >= 0.1 && std::isfinite(v)) sum += v, ++n;
+  for (int k = 0; k < p.phases(); ++k)
+    for (int j = 0; j < p.rows(); ++j) {
+      const double v = p.at(f.profile_rms_velocity_x, k, j);
+      if (p.at(f.profile_area_fraction, k, j) >= 0.1 && std::isfinite(v)) sum += v, ++n;
     }
   return n > 0 ? sum / n : NAN;
 }
@@ -28,13 +28,9 @@ double layerRmsVx(const ParticleFields& p) {
 // Dissipation over the steady part (after the first fifth of the run, as the run's period):
 // the energy lost per drive cycle over the mean kinetic energy, and the pair impacts' e_eff.
 void readDissipation(const std::string& run_path, double frequency, SurfaceWaveRun& r) {
-  const h5::File f = h5::File::openReadOnly(run_path);
-  const auto series = [&](const char* name) {
-    return f.readDataset<double>(h5md::observableGroup(name) + "/value");
-  };
-  const auto time = f.readDataset<double>(h5md::observableGroup("center_of_mass_height") + "/time");
-  const auto lost = series("dissipated_energy"), kinetic = series("kinetic_energy");
-  const auto impact = series("pair_impact_energy"), loss = series("pair_impact_loss");
+  const RunObservables o = readRunObservables(run_path);
+  const std::vector<double>&time = o.time, &lost = o.dissipated_energy, &kinetic = o.kinetic_energy;
+  const std::vector<double>&impact = o.pair_impact_energy, &loss = o.pair_impact_loss;
   const std::size_t n = time.size();
   if (n < 10 || lost.size() != n || kinetic.size() != n || impact.size() != n) return;
   const std::size_t first = n / 5, last = n - 1;
@@ -81,7 +77,7 @@ SurfaceWaveRun readSurfaceWaveRun(const RunRecord& rec, const SurfaceWavePoint& 
     r.detector_mode = lp.surface_wave_mode;
     r.detector_amplitude_d = lp.surface_wave_amplitude_d;
   }
-  r.rms_vx = layerRmsVx(readParticleFields(rec.fieldsPath()));
+  r.rms_vx = layerRmsVx(readFieldsFile(rec.fieldsPath()).profiles);
   readDissipation(rec.runPath(), point.frequency, r);
   return r;
 }

@@ -6,11 +6,11 @@
 #include <cmath>
 #include <map>
 
+#include "coarse_grain/FieldsReader.hpp"
 #include "coarse_grain/SurfaceWavesFile.hpp"
-#include "studies/framework/WaveMomentumRatio.hpp"
-#include "studies/run_files/RunOutputs.hpp"
 #include "studies/surface_waves/SurfaceWaveOnset.hpp"
 #include "studies/surface_waves/SurfaceWaveRunReader.hpp"
+#include "studies/wave_analysis/WaveMomentumRatio.hpp"
 
 namespace granwave {
 
@@ -80,8 +80,8 @@ std::vector<MomentumRatioPoint> momentumRatios(const SurfaceWavesConfig& c, cons
         const SurfaceWavePoint b{wet, c.width_d, c.periodic, c.rows, f, g, seed};
         const RunRecord &rd = runs.get(c.label(a)), &rw = runs.get(c.label(b));
         if (!rd.ok || !rw.ok) continue;
-        const Measurement r = waveMomentumRatio(readParticleFields(rd.fieldsPath()),
-                                                readParticleFields(rw.fieldsPath()), {});
+        const Measurement r = waveMomentumRatio(readFieldsFile(rd.fieldsPath()),
+                                                readFieldsFile(rw.fieldsPath()), {});
         if (r.valid()) per_seed.push_back(r.value);
       }
       p.r_x = seedMean(per_seed);

@@ -1,5 +1,6 @@
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "studies/surface_waves/SurfaceWavesReport.hpp"

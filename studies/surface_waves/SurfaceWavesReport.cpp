@@ -120,7 +120,7 @@ void addMomentumRatio(const SurfaceWavesResults& r, Report& report) {
   ReportSection& sec = report.section(
       "r_x beside the spectrum",
       fmt::format("The paper's deficiency factor r_x = RMS(v_x)_dry / RMS(v_x)_wet "
-                  "(studies/framework/WaveMomentumRatio: the rows' mean over 0.15 T from the "
+                  "(studies/wave_analysis/WaveMomentumRatio: the rows' mean over 0.15 T from the "
                   "wet strong impact), for the variants named dry and wet in the base box, mean "
                   "and standard error over seeds. Points where neither layer has a wave are the "
                   "noise floor. With waves in either layer: {}; without waves in either: {}.",

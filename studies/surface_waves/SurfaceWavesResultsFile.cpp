@@ -1,7 +1,7 @@
 // /results/surface_waves of results.h5 (docs/studies.md, "surface-waves").
 #include <fmt/format.h>
 
-#include "studies/framework/StudyResults.hpp"
+#include "studies/contract/StudyResults.hpp"
 #include "studies/surface_waves/SurfaceWavesAnalysis.hpp"
 
 namespace granwave {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <set>
 
-#include "studies/framework/Measurement.hpp"
+#include "studies/statistics/Measurement.hpp"
 #include "studies/surface_waves/SurfaceWavesAnalysis.hpp"
 #include "studies/surface_waves/SurfaceWavesReport.hpp"
 

@@ -5,8 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "studies/framework/StudyResults.hpp"
-#include "studies/run_files/HydroRunFile.hpp"
+#include "studies/contract/StudyResults.hpp"
 
 namespace granwave {
 
@@ -22,17 +21,18 @@ PaperLaw paperLaw(const WaveFrontsConfig& c, const RunSet& runs, int law) {
   for (int seed : c.seeds) {
     auto p = particleFields(runs, WaveFrontsConfig::particleRun(law, fmt::format("seed {}", seed)));
     if (!p) continue;
-    per_seed.push_back(impactFronts(p->fronts));
+    per_seed.push_back(impactFronts(p->profiles));
     tracked.push_back(velocityFronts(*p));
-    const double jump =
-        PaperLaw::kPeakJumpSpeed * p->cycles_per_window / (p->frequency * p->phases);
-    for (const Front& f : p->fronts) {
+    const double jump = PaperLaw::kPeakJumpSpeed * p->cycles_per_window /
+                        (p->context.frequency * p->profiles.phases());
+    for (const FrontEpisode& f : p->profiles.fronts) {
       if (!f.from_impact) continue;
       ++out.peak_fronts;
-      out.peak_jumps += peakJumps(*p, f, jump);
+      out.peak_jumps += peakJumps(p->profiles, f, jump);
     }
-    for (double m : centerOfMassMinimumPhases(*p, p->cycles_per_window)) minima.push_back(m);
-    out.periods.push_back(p->layer_period);
+    for (double m : centerOfMassMinimumPhases(p->profiles, p->cycles_per_window))
+      minima.push_back(m);
+    out.periods.push_back(p->context.layer_period);
     if (seed == c.seeds.front()) out.seed1 = p;
     if (!out.first) out.first = std::move(p);
   }
@@ -53,9 +53,9 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
   SweepPoint s;
   if (auto p = particleFields(runs, particle_label)) {
     s.ed_cpu_per_cycle = runs.get(particle_label).cpu / particle_cycles;
-    s.ed = impactFronts(p->fronts).all;
-    s.collision_phase = meanPhase(centerOfMassMinimumPhases(*p, p->cycles_per_window));
-    s.layer_period = p->layer_period;
+    s.ed = impactFronts(p->profiles).all;
+    s.collision_phase = meanPhase(centerOfMassMinimumPhases(p->profiles, p->cycles_per_window));
+    s.layer_period = p->context.layer_period;
   }
   const HydroOutcome h = hydroOutcome(runs, hydro_label);
   s.hydro_ok = h.fields.has_value();
@@ -93,54 +93,6 @@ ParameterSweep wetSweep(const WaveFrontsConfig& c, const RunSet& runs, const std
                                    WaveFrontsConfig::hydroRun(1, tag), c.sweepCycles(1)));
   }
   return sw;
-}
-
-// Particles: the statistical error against the cycles averaged. Hydro: the discretisation
-// error against the finest grid with the tightest tolerance (the reference).
-CostAccuracy costAccuracy(const WaveFrontsConfig& c, const RunSet& runs, const PaperLaw& wet) {
-  CostAccuracy out;
-  for (double dur : c.cost_durations) {
-    const std::string label =
-        WaveFrontsConfig::particleRun(1, fmt::format("{} s", formatCompact(dur)));
-    auto p = particleFields(runs, label);
-    if (!p) continue;
-    CostRow row;
-    row.duration = dur;
-    row.pooled_cycles = p->pooled_cycles;
-    row.cpu = runs.get(label).cpu;
-    row.speed = impactFronts(p->fronts).all;
-    row.error = row.speed.error;
-    out.ed_cpu.push_back(row.cpu);
-    out.ed_error.push_back(row.error);
-    out.rows.push_back(row);
-  }
-  const int ref_cells = *std::max_element(c.cost_cells.begin(), c.cost_cells.end());
-  const double ref_rtol = *std::min_element(c.cost_rtol.begin(), c.cost_rtol.end());
-  const HydroOutcome ref = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(ref_cells, ref_rtol));
-  const Measurement v_ref = ref.fields ? ref.fronts.all : Measurement{};
-  for (int cells : c.cost_cells)
-    for (double rtol : c.cost_rtol) {
-      const HydroOutcome h = hydroOutcome(runs, WaveFrontsConfig::costHydroRun(cells, rtol));
-      CostRow row;
-      row.particles = false;
-      row.ok = h.fields.has_value();
-      row.reference = cells == ref_cells && rtol == ref_rtol;
-      row.cells = cells;
-      row.rtol = rtol;
-      row.cpu = h.cpu;
-      row.failure = h.failure;
-      if (row.ok) {
-        row.speed = h.fronts.all;
-        row.error = row.reference ? NAN : std::abs(row.speed.value - v_ref.value);
-        if (!row.reference && std::isfinite(row.error)) {
-          out.hydro_by_rtol[rtol].first.push_back(row.cpu);
-          out.hydro_by_rtol[rtol].second.push_back(row.error);
-        }
-      }
-      out.rows.push_back(row);
-    }
-  out.model_gap = std::abs(v_ref.value - wet.ed.all.value);
-  return out;
 }
 
 void writePaper(h5::File& f, int law, const PaperLaw& p) {
@@ -236,7 +188,6 @@ void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults
 
 // Measured CPU times (they differ between any two executions) all live under /cost.
 void writeCost(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {
-  const CostAccuracy& cost = r.cost;
   const std::string grp = kRoot + "/cost";
   f.createGroup(grp);
   for (int law = 0; law < kLaws; ++law) {  // CPU seconds per answer over the N sweep
@@ -249,64 +200,21 @@ void writeCost(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& 
     putSeries(f, fmt::format("{}/per_answer_{}_hydro_cpu_seconds", grp, kLawNames[law]), hydro,
               "s");
   }
-  putSeries(f, grp + "/ed_cpu_seconds", cost.ed_cpu, "s");
-  putSeries(f, grp + "/ed_error", cost.ed_error, "m s-1");
-  for (const auto& [rtol, xy] : cost.hydro_by_rtol) {
-    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_cpu_seconds", grp, rtol), xy.first, "s");
-    putSeries(f, fmt::format("{}/hydro_rtol_{:g}_error", grp, rtol), xy.second, "m s-1");
-  }
-  putValue(f, grp, "model_gap", cost.model_gap);
+  writeCostAccuracy(f, grp, r.cost);
 }
 
 }  // namespace
 
-double meanPhase(const std::vector<double>& v) {
-  double c = 0, s = 0;
-  for (double x : v) {
-    c += std::cos(2 * M_PI * x);
-    s += std::sin(2 * M_PI * x);
-  }
-  if (v.empty()) return NAN;
-  // In (0.5, 1.5]: collision times near the end of a cycle read as 0.98, 1.01, not 0.01.
-  double m = std::atan2(s, c) / (2 * M_PI);
-  return m <= 0.5 ? m + 1 : m;
-}
-
-std::optional<ParticleFields> particleFields(const RunSet& runs, const std::string& label) {
-  const RunRecord& r = runs.get(label);
-  if (!r.ok) return std::nullopt;
-  return readParticleFields(r.fieldsPath());
-}
-
-HydroOutcome hydroOutcome(const RunSet& runs, const std::string& label) {
-  HydroOutcome h;
-  const RunRecord& r = runs.get(label);
-  h.cpu = r.cpu;
-  if (!r.ok) {
-    h.failure = r.message;
-    return h;
-  }
-  h.fields = readHydroFields(r.hydroPath());
-  h.fronts = impactFronts(h.fields->fronts);
-  const int cycles = h.fields->periodic ? h.fields->period : 2;
-  h.collision_phase = meanPhase(centerOfMassMinimumPhases(*h.fields, cycles));
-  return h;
-}
-
-bool peakJumps(const Profiles& p, const Front& f, double limit) {
-  if (p.phases <= 1 || p.front.size() != static_cast<std::size_t>(p.phases)) return false;
-  const int steps = ((f.last_phase - f.first_phase) % p.phases + p.phases) % p.phases;
+bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit) {
+  const int n = p.phases();
+  if (n <= 1 || p.front_height.size() != static_cast<std::size_t>(n)) return false;
+  const int steps = ((f.last_phase - f.first_phase) % n + n) % n;
   for (int k = 0; k < steps; ++k) {
-    const double a = p.front[static_cast<std::size_t>((f.first_phase + k) % p.phases)];
-    const double b = p.front[static_cast<std::size_t>((f.first_phase + k + 1) % p.phases)];
+    const double a = p.front_height[static_cast<std::size_t>((f.first_phase + k) % n)];
+    const double b = p.front_height[static_cast<std::size_t>((f.first_phase + k + 1) % n)];
     if (b - a > limit) return true;  // NaN (no peak) compares false
   }
   return false;
-}
-
-VelocityFronts trackedHydroFronts(const HydroOutcome& h, double frequency) {
-  if (!h.fields || h.fields->phases <= 1) return {};
-  return velocityFronts(*h.fields, (h.fields->phase[1] - h.fields->phase[0]) / frequency);
 }
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& runs) {
@@ -321,11 +229,11 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
     }
   r.wet_sweeps[0] = wetSweep(c, runs, "St_c", c.stokes);
   r.wet_sweeps[1] = wetSweep(c, runs, "e_inf", c.e_inf);
-  r.cost = costAccuracy(c, runs, r.paper[1]);
+  r.cost = costAccuracy(c, runs, r.paper[1].ed.all);
   r.failures = analyseFailures(c, runs);
   for (int law = 0; law < kLaws; ++law) r.models[law] = analyseModels(c, runs, law);
   for (int law = 0; law < kLaws; ++law) r.states[law] = analyseStates(c, runs, law);
-  if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0]);
+  if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0].seed1, r.paper[0].hydro[0]);
   return r;
 }
 

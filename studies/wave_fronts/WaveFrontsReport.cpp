@@ -7,17 +7,17 @@
 #include <cmath>
 
 #include "scene/SceneDerived.hpp"
-#include "studies/framework/FailureReason.hpp"
-#include "studies/framework/FieldFigures.hpp"
+#include "studies/contract/FailureReason.hpp"
+#include "studies/wave_analysis/FieldFigures.hpp"
 
 namespace granwave {
 
 namespace {
 
-Series frontSeries(const Profiles& p, double d, std::string label, std::string color,
+Series frontSeries(const PhaseProfiles& p, double d, std::string label, std::string color,
                    std::string marker) {
   std::vector<double> y;
-  for (int k = 0; k < p.phases; ++k) y.push_back((p.front[k] - p.plate[k]) / d);
+  for (int k = 0; k < p.phases(); ++k) y.push_back((p.front_height[k] - p.plate_height[k]) / d);
   Series s = lineSeries(p.phase, y, std::move(label), std::move(color));
   s.style = "points";
   s.marker = std::move(marker);
@@ -93,8 +93,9 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
                     format(p.tracked.speed), periodList(p.periods),
                     formatNumber(p.collision_phase)});
   if (p.first) {
-    fronts.series.push_back(frontSeries(*p.first, d, "ED " + name, kLawColors[law], "^"));
-    com.series.push_back(centerOfMassSeries(*p.first, d, "ED " + name, kLawColors[law]));
+    const PhaseProfiles& first = p.first->profiles;
+    fronts.series.push_back(frontSeries(first, d, "ED " + name, kLawColors[law], "^"));
+    com.series.push_back(centerOfMassSeries(first, d, "ED " + name, kLawColors[law]));
   }
   for (int v = 0; v < 2; ++v) {
     const HydroOutcome& h = p.hydro[v];
@@ -111,15 +112,16 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
          h.fields->periodic ? std::to_string(h.fields->period) : "none in the cycles run",
          formatNumber(h.collision_phase)});
     if (v != 0) continue;
-    fronts.series.push_back(frontSeries(*h.fields, d, "hydro " + name, kLawColors[law], "o"));
-    Series cs = centerOfMassSeries(*h.fields, d, "hydro " + name, kLawColors[law]);
+    fronts.series.push_back(frontSeries(h.fields->lab, d, "hydro " + name, kLawColors[law], "o"));
+    Series cs = centerOfMassSeries(h.fields->lab, d, "hydro " + name, kLawColors[law]);
     cs.linestyle = "--";
     com.series.push_back(cs);
   }
   if (law == 0 && p.first) {
     std::vector<double> plate;
-    for (int k = 0; k < p.first->phases; ++k) plate.push_back(p.first->plate[k] / d);
-    com.series.push_back(lineSeries(p.first->phase, plate, "plate", "black"));
+    const PhaseProfiles& first = p.first->profiles;
+    for (int k = 0; k < first.phases(); ++k) plate.push_back(first.plate_height[k] / d);
+    com.series.push_back(lineSeries(first.phase, plate, "plate", "black"));
   }
 }
 
@@ -177,249 +179,53 @@ void profileSections(const WaveFrontsConfig& c, const WaveFrontsResults& r, Repo
     const std::string name = kLawNames[law];
     const double T0 = derive(c.scenes.base[law]).T0;
     const double Lz = c.scenes.base[law].container.height;
-    if (const auto& p = r.paper[law].seed1) {
-      const ImpactFronts imp = impactFronts(p->fronts);
+    if (const auto& seed1 = r.paper[law].seed1) {
+      const PhaseProfiles& p = seed1->profiles;
+      const ImpactFronts imp = impactFronts(p);
       const double onset = imp.strong_start >= 0 ? imp.strong_start : c.profile_phases.front();
       prof.add(profilesAtPhases(
-          *p, p->temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
+          p, p.pooled.profile_temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
           "Particles, " + name + ": T~g(z) / T0", "T~g / T0",
           fmt::format("From the onset of the strong impact's front (t/T = {:.2f} of the "
                       "{}-cycle window), at the paper's spacing.",
                       onset, c.window)));
-      st.add(spaceTimeFigure(*p, d, Lz, "Particles, " + name,
-                             fmt::format("Layer period {} T.", p->layer_period)));
+      st.add(spaceTimeFigure(p, d, Lz, "Particles, " + name,
+                             fmt::format("Layer period {} T.", seed1->context.layer_period)));
     }
     if (const auto& h = r.paper[law].hydro[0].fields) {
       const ImpactFronts& imp = r.paper[law].hydro[0].fronts;
       const double onset = imp.strong_start >= 0 ? imp.strong_start : c.profile_phases.front();
       prof.add(profilesAtPhases(
-          *h, h->temperature, 1.0 / T0, d, phasesFromImpact(c.profile_phases, onset),
-          "Hydro, " + name + ": T(z) / T0", "T / T0",
+          h->lab, h->lab.pooled.profile_temperature, 1.0 / T0, d,
+          phasesFromImpact(c.profile_phases, onset), "Hydro, " + name + ": T(z) / T0", "T / T0",
           fmt::format("Velocity-dependent closure; from the onset of the impact front (t/T = "
                       "{:.2f}), at the paper's spacing.",
                       onset)));
-      st.add(spaceTimeFigure(*h, d, Lz, "Hydro, " + name,
+      st.add(spaceTimeFigure(h->lab, d, Lz, "Hydro, " + name,
                              h->periodic ? fmt::format("Periodic state of period {} T.", h->period)
                                          : std::string("No periodic state was reached.")));
     }
   }
 }
 
-// Particles and hydro against a swept value, one law.
-void sweepSeries(const std::vector<double>& x, const std::vector<SweepPoint>& points, int law,
-                 Figure& fig) {
-  std::vector<double> y, e, yh, eh;
-  for (const SweepPoint& s : points) {
-    y.push_back(s.ed.value);
-    e.push_back(s.ed.error);
-    yh.push_back(s.hydro.value);
-    eh.push_back(s.hydro.error);
-  }
-  fig.series.push_back(errorSeries(x, y, e, std::string("ED ") + kLawNames[law], kLawColors[law]));
-  Series hs = errorSeries(x, yh, eh, std::string("hydro ") + kLawNames[law], kLawColors[law]);
-  hs.marker = "s";
-  hs.linestyle = "--";
-  fig.series.push_back(hs);
-}
-
-std::string hydroCell(const SweepPoint& s) {
-  return s.hydro_ok ? format(s.hydro) : "failed: " + shortReason(s.hydro_failure);
-}
-
-// A measured caveat, stated only when the runs show it: in deep layers the T~g peak above the
-// threshold jumps between the plate and the top of the layer, and a line through such an
-// episode is not a front speed.
-void deepLayerCaveat(const WaveFrontsResults& r, ReportSection& s) {
-  Measurement fastest;
-  for (int law = 0; law < kLaws; ++law)
-    for (const SweepPoint& p : r.n_sweep[law])
-      if (p.layer_period >= 0 && p.ed.valid() && (!fastest.valid() || p.ed.value > fastest.value))
-        fastest = p.ed;
-  if (fastest.valid() &&
-      fastest.value > 1.5 * std::max(r.paper[0].ed.all.value, r.paper[1].ed.all.value))
-    s.addText(fmt::format(
-        "Caveat: some layers give front speeds up to {} m/s, more than 1.5 times the paper "
-        "scene's. A front speed is the slope of a straight line through the heights of the "
-        "T~g peak above 0.5 T0; where that peak does not travel as one maximum (in the deep "
-        "layers inspected it jumps between the plate region and the top of the layer within a "
-        "few phases), the slope is not a front speed. Read the trend with N from the layers "
-        "whose speeds have small errors.",
-        format(fastest)));
-}
-
-// CPU seconds per answer against N: the particles' cost per cycle times the cycles one answer
-// needs, beside the continuum from the settled layer to its periodic state (docs/performance.md).
-void costPerAnswer(const WaveFrontsConfig& c, const WaveFrontsResults& r, ReportSection& s) {
-  Figure fig;
-  fig.title = "CPU time per answer against N";
-  fig.caption = fmt::format(
-      "Log scale. Particles: CPU per cycle of the sweep run x {:g} cycles; hydro: the whole run "
-      "at the scene's grid, settled layer to periodic state.",
-      c.answer_cycles);
-  fig.xlabel = "N";
-  fig.ylabel = "CPU time per answer (s)";
-  fig.yscale = "log";
-  const std::vector<double> x(c.counts.begin(), c.counts.end());
-  std::string crossover;
-  for (int law = 0; law < kLaws; ++law) {
-    std::vector<double> ed, hy;
-    int first_cheaper = 0;
-    for (const SweepPoint& p : r.n_sweep[law]) {
-      ed.push_back(p.ed_cpu_per_cycle * c.answer_cycles);
-      hy.push_back(p.hydro_cpu);
-      if (first_cheaper == 0 && hy.back() < ed.back()) first_cheaper = c.counts[ed.size() - 1];
-    }
-    fig.series.push_back(
-        lineSeries(x, ed, std::string("particles ") + kLawNames[law], kLawColors[law]));
-    Series hs = lineSeries(x, hy, std::string("hydro ") + kLawNames[law], kLawColors[law]);
-    hs.marker = "s";
-    hs.linestyle = "--";
-    fig.series.push_back(hs);
-    crossover += fmt::format(
-        "{} layer: {}. ", kLawNames[law],
-        first_cheaper ? fmt::format("hydro is cheaper per answer from N = {}", first_cheaper)
-                      : std::string("hydro is not cheaper at any N run"));
-  }
-  s.add(std::move(fig));
-  s.addText(crossover);
-}
-
-std::string trackedCell(const VelocityFronts& v) {
-  if (v.speed.valid()) return format(v.speed);
-  return v.why_none.empty() ? "–" : v.why_none;
-}
-
-// The velocity-jump tracker (docs/fields.md) over the sweep's seeds, beside the hydro solver's
-// fronts found the same way and the Rankine-Hugoniot speeds from the states either side.
-void trackedDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, ReportSection& s) {
-  Table t;
-  t.title = "Impact fronts by the velocity jump against N";
-  t.columns = {"N",
-               "ED dry (m/s)",
-               "ED wet (m/s)",
-               "ED dry RH (m/s)",
-               "ED wet RH (m/s)",
-               "hydro dry (m/s)",
-               "hydro wet (m/s)",
-               "hydro dry RH (m/s)",
-               "hydro wet RH (m/s)"};
-  for (std::size_t i = 0; i < c.counts.size(); ++i) {
-    std::vector<std::string> row{std::to_string(c.counts[i])};
-    for (int law = 0; law < kLaws; ++law) row.push_back(trackedCell(r.n_sweep[law][i].tracked));
-    for (int law = 0; law < kLaws; ++law)
-      row.push_back(format(r.n_sweep[law][i].tracked.jump_speed));
-    for (int law = 0; law < kLaws; ++law)
-      row.push_back(trackedCell(r.n_sweep[law][i].hydro_tracked));
-    for (int law = 0; law < kLaws; ++law)
-      row.push_back(format(r.n_sweep[law][i].hydro_tracked.jump_speed));
-    t.rows.push_back(row);
-  }
-  s.add(std::move(t));
-  int determined = 0, given = 0;  // RH speeds whose error is smaller than their value
-  for (int law = 0; law < kLaws; ++law)
-    for (const SweepPoint& p : r.n_sweep[law])
-      for (const Measurement& m : {p.tracked.jump_speed, p.hydro_tracked.jump_speed})
-        if (m.valid()) {
-          ++given;
-          determined += std::abs(m.value) > m.error;
-        }
-  if (given > 0 && 2 * determined < given)
-    s.addText(fmt::format(
-        "Only {} of the {} Rankine-Hugoniot speeds above exceed their error: across these "
-        "fronts the density changes by a few per cent, so [rho v] / [rho] is ill-conditioned "
-        "and checks nothing here. The tracker is checked against the jump conditions on the "
-        "hydro solver's shock into a uniform gas (docs/fields.md), where the density jump is "
-        "large.",
-        determined, given));
-  s.addText(fmt::format(
-      "The front at a phase is where v_z falls through the midpoint between the fastest-rising "
-      "and the fastest-falling row of the layer; its speed is a straight-line fit from when it "
-      "leaves the plate until it reaches the top. Particles: seeds {} at {} phases per cycle, "
-      "errors from a bootstrap over blocks of cycles and the fit, combined over seeds (seed "
-      "scatter enlarges them); hydro: fit error. RH: the mass jump condition "
-      "[rho v] / [rho] from the states two rows either side, undetermined where the density "
-      "jump is below 2 %. Where no speed is given the cell says why.",
-      fmt::join(c.sweep_seeds, ", "), c.sweep_phases));
-}
-
-void depthSection(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report& report) {
-  ReportSection& s = report.section(
-      "Layer depth N (Fig. 6a)",
-      fmt::format("Mean speed of the impact fronts against the number of particles (seed {}, "
-                  "{:g} s per run), particles and hydro (velocity-dependent closure). The paper "
-                  "finds faster fronts for deeper layers and a weak effect of wetting, with the "
-                  "wet layer hitting the plate about 0.02 T earlier.",
-                  c.seeds.front(), c.sweep_duration));
-  Figure fig;
-  fig.title = "Front speed against N";
-  fig.caption = "Error bars: one sigma (particles: fit and block spread; hydro: fit error).";
-  fig.xlabel = "N";
-  fig.ylabel = "front speed (m/s, lab)";
-  Table t;
-  t.title = "Front speed and collision time against N";
-  t.columns = {"N",
-               "ED dry (m/s)",
-               "ED wet (m/s)",
-               "hydro dry (m/s)",
-               "hydro wet (m/s)",
-               "ED dry CM lowest t/T",
-               "ED wet CM lowest t/T"};
-  std::map<int, std::vector<std::string>> rows;
-  for (int n : c.counts) rows[n] = {std::to_string(n), "–", "–", "–", "–", "–", "–"};
-  const std::vector<double> x(c.counts.begin(), c.counts.end());
-  for (int law = 0; law < kLaws; ++law) {
-    for (std::size_t i = 0; i < c.counts.size(); ++i) {
-      const SweepPoint& p = r.n_sweep[law][i];
-      std::vector<std::string>& row = rows[c.counts[i]];
-      row[1 + law] = format(p.ed);
-      row[5 + law] = formatNumber(p.collision_phase);
-      row[3 + law] = hydroCell(p);
-    }
-    sweepSeries(x, r.n_sweep[law], law, fig);
-  }
-  for (auto& [n, row] : rows) t.rows.push_back(row);
-  s.add(std::move(fig));
-  s.add(std::move(t));
-  deepLayerCaveat(r, s);
-  trackedDepthTable(c, r, s);
-  costPerAnswer(c, r, s);
-}
-
-void wetLawSection(const WaveFrontsResults& r, Report& report) {
-  ReportSection& w = report.section(
-      "Wet-law parameters St_c and e_inf (Fig. 6b)",
-      "Mean impact-front speed of the wet layer (N as in the paper's scene) as one parameter of "
-      "the wet restitution law varies and the other keeps its paper value. The paper finds the "
-      "fronts and the centre-of-mass trajectories unchanged within its resolution.");
-  Table tw;
-  tw.title = "Front speed against the wet-law parameters";
-  tw.columns = {"parameter", "value", "ED wet (m/s)", "hydro wet (m/s)", "ED CM period (T)"};
-  for (const ParameterSweep& sw : r.wet_sweeps) {
-    Figure fw;
-    fw.title = "Front speed against " + sw.key;
-    fw.caption = "Particles (seed 1) and hydro (velocity-dependent closure).";
-    fw.xlabel = sw.key;
-    fw.ylabel = "front speed (m/s, lab)";
-    for (std::size_t i = 0; i < sw.values.size(); ++i) {
-      const SweepPoint& p = sw.points[i];
-      tw.rows.push_back({sw.key, formatCompact(sw.values[i]), format(p.ed), hydroCell(p),
-                         p.layer_period >= 0 ? std::to_string(p.layer_period) : "–"});
-    }
-    std::vector<double> y, e, yh, eh;
-    for (const SweepPoint& p : sw.points) {
-      y.push_back(p.ed.value);
-      e.push_back(p.ed.error);
-      yh.push_back(p.hydro.value);
-      eh.push_back(p.hydro.error);
-    }
-    fw.series.push_back(errorSeries(sw.values, y, e, "ED wet", kLawColors[1]));
-    Series hs = errorSeries(sw.values, yh, eh, "hydro wet", kLawColors[1]);
-    hs.marker = "s";
-    hs.linestyle = "--";
-    fw.series.push_back(hs);
-    w.add(std::move(fw));
-  }
-  w.add(std::move(tw));
+// The report's summary: the wet and dry fronts against the paper's, the models' verdicts, the
+// wet layer's time in the period-2 state.
+void summarise(const WaveFrontsResults& r, const std::string& verdicts, Report& report) {
+  const VelocityFronts& wet = r.paper[1].tracked;
+  const VelocityFronts& dry = r.paper[0].tracked;
+  report.summary = fmt::format(
+      "Particles, wet layer: velocity-jump fronts at {} m/s after the weak and {} m/s after "
+      "the strong impact (paper: 1.61 ± 0.25 and 1.95 ± 0.25; {} and {} sigma away). Dry "
+      "layer: {} and {} m/s. {}",
+      format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
+      formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
+      format(dry.strong), verdicts);
+  const StateShares& st = r.states[1];
+  if (st.windows > 0)
+    report.summary += fmt::format(
+        " Wet layer in the period-2 state {:.0f} % of the time (95 %: {:.0f}–{:.0f} %) and of "
+        "period 2 in {} of {} seeds.",
+        100 * st.time_share, 100 * st.time_low, 100 * st.time_high, st.seeds_period2, st.seeds);
 }
 
 }  // namespace
@@ -432,8 +238,8 @@ void reportWaveFronts(const WaveFrontsConfig& c, const WaveFrontsResults& r, Rep
   costSection(c, r.cost, report);
   failureSection(c, r.failures, report);
   stateSection(r, report);
-  modelSection(c, r, report);
-  if (r.lammps) lammpsSection(c, *r.lammps, r.paper[0], report);
+  summarise(r, modelSection(c, r.models, report), report);
+  if (r.lammps) lammpsSection(c, *r.lammps, r.paper[0].seed1, r.paper[0].hydro[0], report);
 }
 
 }  // namespace granwave

@@ -4,44 +4,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <numbers>
 #include <numeric>
-#include <sstream>
 
-#include "studies/framework/InstalledFiles.hpp"
-#include "studies/framework/Measurement.hpp"
-#include "studies/framework/SeedResampling.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
+#include "studies/installation/InstalledFiles.hpp"
+#include "studies/method_comparison/MethodRuns.hpp"
+#include "studies/statistics/Measurement.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
 #include "studies/wave_fronts/WaveFrontsReport.hpp"
 
 namespace granwave {
-
-namespace {
-
-// The LAMMPS executable: a path, or a name looked up on PATH; empty if not found.
-std::string findProgram(const std::string& exe) {
-  if (exe.find('/') != std::string::npos) return std::filesystem::exists(exe) ? exe : "";
-  const char* path = std::getenv("PATH");
-  std::istringstream dirs(path ? path : "");
-  for (std::string dir; std::getline(dirs, dir, ':');)
-    if (std::filesystem::exists(std::filesystem::path(dir) / exe))
-      return (std::filesystem::path(dir) / exe).string();
-  return "";
-}
-
-}  // namespace
-
-std::string WaveFrontsConfig::failureHydroRun(int law, double gamma, int cells, double rtol) {
-  return hydroRun(law, fmt::format("Gamma={} {} cells rtol {}", formatCompact(gamma), cells,
-                                   formatCompact(rtol)));
-}
-
-std::string WaveFrontsConfig::costHydroRun(int cells, double rtol) {
-  return hydroRun(1, fmt::format("{} cells rtol {}", cells, formatCompact(rtol)));
-}
 
 std::vector<std::string> WaveFrontsConfig::countOverrides(int law, int count) const {
   const Scene& base = scenes.base[law];
@@ -63,10 +37,6 @@ std::vector<std::string> WaveFrontsConfig::countOverrides(int law, int count) co
 
 std::string WaveFrontsConfig::countTag(int count, int seed, int first_seed) {
   return seed == first_seed ? fmt::format("N={}", count) : fmt::format("N={} seed {}", count, seed);
-}
-
-std::string WaveFrontsConfig::lammpsRun() const {
-  return fmt::format("LAMMPS dry seed {}", lammps_seed);
 }
 
 void WaveFrontsStudy::readKeys(StudyFile& f) {
@@ -144,11 +114,10 @@ RunRequest& WaveFrontsStudy::add(const StudyFile& f, RunKind kind, int law,
   return requests_.back();
 }
 
-// The runs of one law: the paper's scene over seeds, hydro with both closures, the N sweep,
-// the failure map, and the simpler models.
+// The runs of one law: the paper's scene over seeds (with the simpler particle models), hydro
+// with both closures, the N sweep, and the methods comparison's failure map and hydro models.
 void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   using C = WaveFrontsConfig;
-  const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
   const std::string constant_e = fmt::format("contact.e={:.6f}", c_.e_eff[law]);
   for (int seed : c_.seeds) planSeed(f, law, seed, requests_);
   for (int seed : c_.extraSeeds()) planSeed(f, law, seed, extra_[law]);
@@ -169,28 +138,14 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
     }
     add(f, RunKind::Hydro, law, C::hydroRun(law, fmt::format("N={}", n)), count, 0);
   }
-  // Where methods fail: ED without TC, hydro over Gamma x grid x tolerance. A failure of these
-  // runs is a result, and the progress lines say so.
-  const std::string expected = "expected failure (failure map)";
-  for (double gamma : c_.fail_gammas) {
-    const std::string drive = fmt::format("drive.gamma={}", formatCompact(gamma));
-    add(f, RunKind::Particles, law,
-        C::particleRun(law, fmt::format("no TC Gamma={}", formatCompact(gamma))),
-        {"contact.tc=\"off\"", drive, seed1}, c_.fail_duration)
-        .failure_note = expected;
-    for (int cells : c_.fail_cells)
-      for (double rtol : c_.fail_rtol)
-        add(f, RunKind::Hydro, law, C::failureHydroRun(law, gamma, cells, rtol),
-            {drive, fmt::format("hydro.cells={}", cells),
-             fmt::format("hydro.rtol={}", formatCompact(rtol))},
-            0)
-            .failure_note = expected;
-  }
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "Garzo-Dufty"),
-      {"hydro.transport=\"garzo-dufty\"", phases}, 0);
-  // Rough particles: the rotational temperature as a field (docs/hydro.md, "Rough particles"),
-  // the continuum's answer to the particles' friction.
-  add(f, RunKind::Hydro, law, C::hydroRun(law, "rough"), {"hydro.particles=\"rough\"", phases}, 0);
+  for (const PlannedRun& r : failureMapRuns(c_, law)) add(f, r);
+  for (const PlannedRun& r : modelHydroRuns(c_, law)) add(f, r);
+}
+
+RunRequest& WaveFrontsStudy::add(const StudyFile& f, const PlannedRun& r) {
+  RunRequest& q = add(f, r.kind, r.law, r.label, r.overrides, r.duration);
+  q.failure_note = r.failure_note;
+  return q;
 }
 
 // The paper's scene on one seed: the full particle model and the simpler particle models,
@@ -214,8 +169,6 @@ void WaveFrontsStudy::planSeed(const StudyFile& f, int law, int sd, std::vector<
   push("no rotation ", {"contact.friction=0", seed});
   push("constant e ", {"contact.restitution=\"constant\"", constant_e, seed});
 }
-
-std::vector<int> WaveFrontsConfig::extraSeeds() const { return seedsAfter(seeds, max_seeds); }
 
 // More seeds of a law whose simplest-model verdict is undecided, seed_step at a time (three
 // runs a seed: the full model, no rotation, constant e), until the law has max_seeds.
@@ -246,8 +199,7 @@ FollowUp WaveFrontsStudy::followUp(const RunSet& runs) const {
   return more;
 }
 
-// The wet law's parameters (Fig. 6b), and cost against accuracy for the wet layer: ED over the
-// cycles averaged, hydro over grid x tolerance.
+// The wet law's parameters (Fig. 6b), then the methods comparison's cost against accuracy.
 void WaveFrontsStudy::planWetSweeps(const StudyFile& f) {
   using C = WaveFrontsConfig;
   const std::string seed1 = fmt::format("run.seed={}", c_.seeds.front());
@@ -260,14 +212,7 @@ void WaveFrontsStudy::planWetSweeps(const StudyFile& f) {
       add(f, RunKind::Particles, 1, C::particleRun(1, tag), {set, seed1}, c_.sweep_duration);
       add(f, RunKind::Hydro, 1, C::hydroRun(1, tag), {set}, 0);
     }
-  for (double d : c_.cost_durations)
-    add(f, RunKind::Particles, 1, C::particleRun(1, fmt::format("{} s", formatCompact(d))), {seed1},
-        d);
-  for (int cells : c_.cost_cells)
-    for (double rtol : c_.cost_rtol)
-      add(f, RunKind::Hydro, 1, C::costHydroRun(cells, rtol),
-          {fmt::format("hydro.cells={}", cells), fmt::format("hydro.rtol={}", formatCompact(rtol))},
-          0);
+  for (const PlannedRun& r : costRuns(c_)) add(f, r);
 }
 
 WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) {
@@ -279,39 +224,8 @@ WaveFrontsStudy::WaveFrontsStudy(StudyFile& f) {
     c_.e_eff[law] = effectiveRestitutionAtT0(c_.scenes.base[law]);
   }
   for (int law = 0; law < kLaws; ++law) planLaw(f, law);
-  if (c_.lammps_mode != "no") addLammps(f);
+  if (std::optional<RunRequest> lammps = lammpsRequest(f, c_)) requests_.push_back(*lammps);
   planWetSweeps(f);
-}
-
-// The LAMMPS run of the paper's dry scene (studies/lammps/paper-scene.lmp; its contact model
-// has a constant e_n = 0.9, so it stands beside the dry particles). Installs Debian's lammps if
-// asked and missing; otherwise a missing executable is a study-file error.
-void WaveFrontsStudy::addLammps(StudyFile& f) {
-  std::string program = findProgram(c_.lammps_executable);
-  if (program.empty() && c_.lammps_install) {
-    fmt::print(stderr, "granwave study: installing Debian's lammps ([lammps] install = true)\n");
-    const int rc = std::system(
-        "DEBIAN_FRONTEND=noninteractive $( [ \"$(id -u)\" -eq 0 ] || echo sudo ) apt-get "
-        "install -y -qq --no-install-recommends lammps >&2");
-    if (rc != 0) f.fail("lammps", "install", "apt-get install lammps failed");
-    program = findProgram(c_.lammps_executable);
-  }
-  if (program.empty() && c_.lammps_mode == "auto") return;  // not installed: left out
-  if (program.empty())
-    f.fail("lammps", "executable",
-           "not found on PATH: install Debian's lammps (apt-get install lammps) or set "
-           "[lammps] install = true");
-  std::ifstream deck(c_.lammps_deck);
-  std::ostringstream text;
-  text << deck.rdbuf();
-  RunRequest q = runRequest(RunKind::Lammps, c_.lammpsRun(), c_.scenes.base[0]);
-  q.program = program;
-  q.deck_path = c_.lammps_deck;
-  q.deck_text = text.str();
-  q.variables = {"duration", formatCompact(c_.lammps_duration), "seed",
-                 std::to_string(c_.lammps_seed)};
-  requests_.push_back(std::move(q));
-  c_.lammps = true;
 }
 
 void WaveFrontsStudy::analyse(const RunSet& runs, h5::File& results, Report& report) const {

@@ -123,3 +123,26 @@ TEST(ImpactFrontTracker, BootstrapErrorMatchesTheSpreadOfTheBlockSpeeds) {
   EXPECT_NEAR(f[0].bootstrap_error, expected, 0.25 * expected);
   EXPECT_DOUBLE_EQ(f[0].bootstrap_found, 1.0);
 }
+
+TEST(ImpactFrontTracker, ImpactThatCrossesThePackedBottomWithinAPhaseIsAnEpisodeWithItsBound) {
+  // Phases 0-9: the whole layer falls (v_a). From phase 10 the front is first seen 16 rows up,
+  // everything below it already moving with the plate (v_b), and then climbs at 2 m/s: the
+  // impact crossed the bottom rows within phase 10 (a deep layer passing its impact on at
+  // once), then travels through the rest.
+  const Step st;
+  const FrontProfiles falling = movingStep(st, 0.0, -1000 * kDz, 10, 10);  // all ahead of it
+  const FrontProfiles climbing = movingStep(st, st.speed(), 18 * kDz, 40, 50);
+  FrontProfiles p = climbing;
+  p.phases = 60;
+  p.density.insert(p.density.begin(), falling.density.begin(), falling.density.end());
+  p.velocity.insert(p.velocity.begin(), falling.velocity.begin(), falling.velocity.end());
+  const std::vector<TrackedFront> fronts = trackFronts(p, kDt);
+  ASSERT_EQ(fronts.size(), 1u);
+  const TrackedFront& f = fronts[0];
+  EXPECT_EQ(f.first_phase, 10);
+  EXPECT_TRUE(f.resolved);
+  EXPECT_NEAR(f.speed, st.speed(), 1e-9);
+  // First seen at 18 rows (z = 18 kDz above z = 0) with the layer's lowest row at 2.5 kDz.
+  EXPECT_NEAR(f.bulk_crossing, 18 * kDz - 2.5 * kDz, 1e-12);
+  EXPECT_NEAR(f.bulk_speed_lower_bound, f.bulk_crossing / kDt, 1e-9);
+}

@@ -8,7 +8,8 @@
 // standard errors, sqrt(s_ours^2 + s_paper^2), and that the measurement is informative
 // (s_ours < 0.6 m/s). One seed alone is a chaotic sample whose error swings with round-off:
 // seed 1 gave 1.80 +- 0.46 / 1.86 +- 0.37, 1.18 +- 0.42 / 1.28 +- 0.40 on earlier builds and
-// 1.88 +- 0.99 for the strong front after the rider-pair fix of issue 6 (docs/fields.md).
+// 1.88 +- 0.99 for the strong front after the rider-pair fix (docs/physics.md, item 5;
+// docs/fields.md).
 // This checks the paper's own marker, the T~g peak, measured the paper's way. On this scene
 // that peak jumps from near the plate to the top of the layer within one phase, so its line
 // is not a travelling front and its agreement is weaker evidence than it looks; the studies

@@ -32,8 +32,8 @@ EdSimulation simulationOf(const EngineConfig& c, const Scene& s) {
 }
 
 // The paper's dry layer at Gamma = 1 (seed 2), which rattled at no gap in a row filling the
-// box and was stopped by the collapse detector at t = 0.242 s with the sleep rule off
-// (issue 16), run with the rule off and the alarm as "auto" sets it on a flying layer.
+// box and was stopped by the collapse detector at t = 0.242 s with the sleep rule off, run
+// with the rule off and the alarm as "auto" sets it on a flying layer.
 Scene dryAtGammaOne(double duration) {
   return paperFile("dry",
                    {"drive.gamma=1", "run.seed=2", "run.duration=" + std::to_string(duration)});

@@ -147,9 +147,9 @@ Scene pouredPacking(int n, double duration) {
 
 }  // namespace
 
-// The three runs of issue 16 that the collapse detector stopped (a crystal whose rows fill
-// the L_x = 30 d box exactly rattled elastically within t_c for ever) now run past their
-// stopping time (0.206, 0.242 and 0.139 s) to 1 s.
+// The three runs that the collapse detector stopped before resting contacts (a crystal whose
+// rows fill the L_x = 30 d box exactly rattled elastically within t_c for ever) now run past
+// their stopping time (0.206, 0.242 and 0.139 s) to 1 s.
 TEST(RestingContact, SettlingDryLayerOnStillPlateRunsPastTheOldCollapse) {
   EXPECT_EQ(runToEnd(paperFile("dry", {"drive.frequency=0", "run.seed=2", "run.duration=1"})), 1.0);
 }

@@ -2,7 +2,7 @@
 // 2-7, 150 cycles) with five seeds, dry and wet, on the scenes' defaults (TC model on,
 // contact.sleep = "auto"): every run reaches its end without a contact the engine does not
 // resolve. Before the sleep rule's alarm (docs/physics.md, "Resting contacts", item 7) nine of
-// these 240 runs, all wet, stopped with exit 3 (issue 16; docs/performance.md, "Stability grid
+// these 240 runs, all wet, stopped with exit 3 (docs/performance.md, "Stability grid
 // with five seeds"). About 650 CPU-s in a Release build, so the label `grid`: the sanitizer pass
 // of scripts/test.sh leaves it out (its runs take the code paths of the shorter tests).
 #include <gtest/gtest.h>

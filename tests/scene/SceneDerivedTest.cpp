@@ -113,7 +113,7 @@ TEST(SceneDerived, UndrivenSceneWithoutTemperatureTakesTcFromSqrtGD) {
   EXPECT_NEAR(d.tc, tcContactDuration(d.mass, d.hertz_k, std::sqrt(9.81 * 0.002)), 1e-15);
 }
 
-TEST(SceneDerived, KappaReadingsGiveTheDryRestitutionAtOneMetrePerSecondOfIssue15) {
+TEST(SceneDerived, KappaReadingsGiveTheDryRestitutionAtOneMetrePerSecondOfEachUnit) {
   // e_dry(1 m/s) = 1 - kappa_SI for kappa = 0.1 read with v_n in m/s, in units of sqrt(g d)
   // (g = 9.81, d = 2 mm: u = 0.1401 m/s) and in cm/s: 0.90, 0.852, 0.749 (kappa u^(-1/5)).
   Scene s;

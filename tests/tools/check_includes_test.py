@@ -36,8 +36,8 @@ class IncludeRule(unittest.TestCase):
         code, out = run({
             "particles/Engine.cpp": '#include "scene/Scene.hpp"\n#include "h5/File.hpp"\n',
             "coarse_grain/Fields.cpp": '#include "particles/Snapshot.hpp"\n#include "scene/S.hpp"\n',
-            "studies/framework/Study.cpp": '#include "hydro/Closure.hpp"\n',
-            "studies/stability/Vote.cpp": '#include "studies/framework/Study.hpp"\n'
+            "studies/hydro_run/Model.cpp": '#include "hydro/Closure.hpp"\n',
+            "studies/stability/Vote.cpp": '#include "studies/contract/Study.hpp"\n'
                                           '#include "coarse_grain/Fields.hpp"\n#include "Vote.hpp"\n',
             "studies/cli/main.cpp": '#include "studies/stability/Vote.hpp"\n',
             "tests/studies/stability/VoteTest.cpp": '#include "studies/stability/Vote.hpp"\n'
@@ -47,8 +47,8 @@ class IncludeRule(unittest.TestCase):
 
     def test_particles_including_hydro_or_studies_is_rejected(self):
         self.assertRejected("particles/A.cpp", "hydro/B.hpp", ["particles may not include hydro"])
-        self.assertRejected("particles/A.cpp", "studies/framework/S.hpp",
-                            ["particles may not include studies/framework"])
+        self.assertRejected("particles/A.cpp", "studies/contract/S.hpp",
+                            ["particles may not include studies/contract"])
 
     def test_hydro_including_particles_or_scene_is_rejected(self):
         self.assertRejected("hydro/A.hpp", "particles/B.hpp", ["hydro may not include particles"])
@@ -64,11 +64,17 @@ class IncludeRule(unittest.TestCase):
         self.assertRejected("studies/sound_speed/A.cpp", "studies/cli/B.hpp",
                             ["studies/sound_speed may not include studies/cli"])
 
-    def test_the_runner_and_the_report_stay_below_the_framework(self):
+    def test_the_runner_and_the_report_stay_below_the_study_contract(self):
         self.assertRejected("studies/runner/A.cpp", "studies/run_files/B.hpp",
                             ["studies/runner may not include studies/run_files"])
-        self.assertRejected("studies/report/A.cpp", "studies/framework/B.hpp",
-                            ["studies/report may not include studies/framework"])
+        self.assertRejected("studies/report/A.cpp", "studies/contract/B.hpp",
+                            ["studies/report may not include studies/contract"])
+
+    def test_the_methods_comparison_does_not_include_the_study_it_is_part_of(self):
+        self.assertRejected("studies/method_comparison/A.cpp", "studies/wave_fronts/B.hpp",
+                            ["studies/method_comparison may not include studies/wave_fronts"])
+        self.assertRejected("studies/method_comparison/A.cpp", "studies/stability/B.hpp",
+                            ["studies/method_comparison may not include studies/stability"])
 
     def test_a_test_follows_the_rule_of_the_folder_it_tests(self):
         self.assertRejected("tests/hydro/ATest.cpp", "particles/B.hpp",

@@ -62,8 +62,9 @@ fs::path FieldsCli::dir_;
 
 }  // namespace
 
-// One period detector for every command (issue 15): `fields` reports the period `simulate`
-// reported for the same run, whatever window it averages over.
+// One period detector for every command (coarse_grain/PeriodDetector.hpp, runPeriod): `fields`
+// reports the period `simulate` reported for the same run, whatever window it averages over;
+// two rules could give a bistable layer two periods.
 TEST_F(FieldsCli, GivesTheRunThePeriodSimulateGaveIt) {
   const std::string sim = slurp(dir_ / "simulate.txt");
   const auto at = sim.find("centre of mass  period ");

@@ -54,8 +54,9 @@ TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
   const auto shape = f.shape("/plate_frame/temperature");
   ASSERT_EQ(shape.size(), 2u);
   EXPECT_EQ(shape[1], 100u);
-  EXPECT_EQ(shape[0] % 50, 0u);                          // whole cycles of 50 phases
-  EXPECT_EQ(f.shape("/lab_frame/temperature")[1], 40u);  // the coarse-graining grid
+  EXPECT_EQ(shape[0] % 50, 0u);                         // whole cycles of 50 phases
+  EXPECT_EQ(f.shape("/profiles/temperature")[1], 40u);  // the coarse-graining grid, named as
+  EXPECT_EQ(f.shape("/grid/z")[0], 40u);                // in a fields file
   EXPECT_GT(f.readAttribute<std::int64_t>("/solver", "steps"), 0);
   EXPECT_EQ(f.readStringAttribute("/plate_frame/temperature", "unit"), "J");
 }

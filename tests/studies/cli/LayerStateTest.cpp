@@ -1,4 +1,4 @@
-// The classifiers on whole simulated layers of known state (issue 6): the paper's dry layer is
+// The classifiers on whole simulated layers of known state: the paper's dry layer is
 // a crystal at Gamma = 2, f = 20 Hz (a thin, dense, barely lifted packing of monodisperse disks
 // orders hexagonally) and fluidized (liquid-like) at Gamma = 4, f = 10 Hz (the paper's scene,
 // Fig. 2). The expected states come from the paper's stability diagram (Fig. 3) at those points.

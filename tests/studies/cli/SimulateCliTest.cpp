@@ -220,8 +220,8 @@ TEST_F(SimulateCli, SigtermInsideALongRecordStopsWithinOneSecond) {
   EXPECT_EQ(reader.frameCount(), 1u);  // the record at t = 0
 }
 
-// Exit codes of checkpointed runs (studies/ExitCode.hpp): a failure outside the run is 75 and
-// keeps what is there; the engine's own breakdown is the run's result and clears it.
+// Exit codes of checkpointed runs (studies/runner/ExitCode.hpp): a failure outside the run is 75
+// and keeps what is there; the engine's own breakdown is the run's result and clears it.
 TEST_F(SimulateCli, CheckpointLockHeldByAnotherProcessExits75AndWritesNothing) {
   const std::string scene = write("short.toml", kShort);
   const Result r =

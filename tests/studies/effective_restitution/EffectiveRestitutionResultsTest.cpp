@@ -23,8 +23,9 @@
 
 #include "scene/SceneDerived.hpp"
 #include "scene/SceneParser.hpp"
-#include "studies/framework/StudyScenes.hpp"
-#include "tests/studies/framework/TinyStudy.hpp"
+#include "studies/contract/StudyScenes.hpp"
+#include "studies/hydro_run/HydroModel.hpp"
+#include "tests/studies/contract/TinyStudy.hpp"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/studies/framework/TinyStudy.hpp"
+#include "tests/studies/contract/TinyStudy.hpp"
 
 namespace {
 

@@ -1,5 +1,5 @@
-// The stability study's verdict over seeds (studies/SeedVote.hpp): the most frequent answer,
-// deterministic ties, and which runs vote.
+// The stability study's verdict over seeds (studies/stability/SeedVote.hpp): the most frequent
+// answer, deterministic ties, and which runs vote.
 #include <gtest/gtest.h>
 
 #include <stdexcept>

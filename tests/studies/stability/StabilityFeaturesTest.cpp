@@ -1,4 +1,4 @@
-// The stability study's check of the paper's features (studies/StabilityFeatures.hpp) on
+// The stability study's check of the paper's features (studies/stability/StabilityFeatures.hpp) on
 // synthetic grids: a grid drawn as the paper describes its Fig. 3 (Huang, Sec. III) passes
 // every check; the pattern this model measures (waves in the wet layer, fluid at Gamma >= 6)
 // fails the ones it contradicts; a grid without the points a check needs says "not tested".
@@ -130,8 +130,8 @@ TEST(StabilityFeatures, DifferencesCountThePaperSymbolsNotThePeriod) {
   EXPECT_EQ(verdicts(g).at("differences_shrink_with_f"), "no");
 }
 
-// The layer the issue describes at 10 Hz, Gamma = 6-7: liquid-like by the bonds over 15 cycles,
-// ordered and compact in every cycle. Each criterion answers its own checks.
+// The layer measured at 10 Hz, Gamma = 6-7 (docs/classification.md): liquid-like by the bonds
+// over 15 cycles, ordered and compact in every cycle. Each criterion answers its own checks.
 TEST(StabilityFeatures, EachSolidCriterionAnswersTheStateChecksOnItsOwn) {
   const std::vector<std::string> states[2][2] = {{{C, L, L, L, L}, {C, C, C, C, C}},
                                                  {{C, L, L, L, L}, {C, C, C, C, C}}};

@@ -20,7 +20,7 @@
 #include <string>
 
 #include "scene/SceneParser.hpp"
-#include "tests/studies/framework/TinyStudy.hpp"
+#include "tests/studies/contract/TinyStudy.hpp"
 
 namespace {
 

@@ -11,10 +11,10 @@ using namespace granwave;
 TEST(PeakJump, APeakThatRisesTwentyMillimetresInOnePhaseJumpsOneThatClimbsDoesNot) {
   // Front heights (m) over 8 phases of a 10-phase window: a climb at 1 mm per phase, then a
   // rise of 15 mm between phases 5 and 6 (the top of the layer). Limit 5 mm per phase.
-  Profiles p;
-  p.phases = 10;
-  p.front = {0.000, 0.001, 0.002, 0.003, 0.004, 0.005, 0.020, 0.021, NAN, NAN};
-  Front climbing, jumping, wrapped;
+  PhaseProfiles p;
+  p.pooled.phases = 10;
+  p.front_height = {0.000, 0.001, 0.002, 0.003, 0.004, 0.005, 0.020, 0.021, NAN, NAN};
+  FrontEpisode climbing, jumping, wrapped;
   climbing.first_phase = 0;
   climbing.last_phase = 5;
   jumping.first_phase = 0;
@@ -25,6 +25,6 @@ TEST(PeakJump, APeakThatRisesTwentyMillimetresInOnePhaseJumpsOneThatClimbsDoesNo
   wrapped.first_phase = 8;
   wrapped.last_phase = 1;
   EXPECT_FALSE(peakJumps(p, wrapped, 0.005));
-  p.front[9] = -0.010;  // from -10 mm at phase 9 to 0 at phase 0: a rise of 10 mm
+  p.front_height[9] = -0.010;  // from -10 mm at phase 9 to 0 at phase 0: a rise of 10 mm
   EXPECT_TRUE(peakJumps(p, wrapped, 0.005));
 }

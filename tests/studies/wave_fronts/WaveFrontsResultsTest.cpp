@@ -13,7 +13,7 @@
 #include <cmath>
 #include <string>
 
-#include "tests/studies/framework/TinyStudy.hpp"
+#include "tests/studies/contract/TinyStudy.hpp"
 
 namespace {
 

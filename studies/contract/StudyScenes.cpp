@@ -1,0 +1,50 @@
+#include "studies/contract/StudyScenes.hpp"
+
+#include <fmt/format.h>
+
+#include "scene/SceneParser.hpp"
+
+namespace granwave {
+
+Scene studyScene(const StudyFile& study, const std::string& scene_path,
+                 const std::vector<std::string>& overrides) {
+  try {
+    Scene s = parseSceneFile(scene_path, overrides);
+    if (s.drive.frequency > 0) s.run.trajectory_stride = s.run.phases_per_cycle;
+    return s;
+  } catch (const SceneError& e) {
+    std::string set;
+    for (const std::string& o : overrides) set += (set.empty() ? "" : ", ") + o;
+    throw StudyError(fmt::format("{}: scene {}{}: {}", study.path(), scene_path,
+                                 set.empty() ? "" : " with " + set, e.what()));
+  }
+}
+
+LawScenes LawScenes::read(StudyFile& f) {
+  LawScenes s;
+  s.path[0] = f.scenePath("scenes", "dry", "../scenes/paper-dry.toml");
+  s.path[1] = f.scenePath("scenes", "wet", "../scenes/paper-wet.toml");
+  s.set = f.strings("scenes", "set", {});
+  return s;
+}
+
+void LawScenes::loadBase(const StudyFile& f) {
+  for (int law = 0; law < kLaws; ++law) base[law] = studyScene(f, path[law], set);
+}
+
+Scene LawScenes::scene(const StudyFile& f, int law,
+                       const std::vector<std::string>& overrides) const {
+  std::vector<std::string> all = set;
+  all.insert(all.end(), overrides.begin(), overrides.end());
+  return studyScene(f, path[law], all);
+}
+
+std::string particleLabel(int law, const std::string& tag) {
+  return fmt::format("ED {} {}", kLawNames[law], tag);
+}
+
+std::string hydroLabel(int law, const std::string& tag) {
+  return fmt::format("hydro {} {}", kLawNames[law], tag);
+}
+
+}  // namespace granwave
