@@ -60,9 +60,10 @@ TEST(HydroModel, RunLastsTheScenesDurationAfterATwoCycleRamp) {
   const SceneDerived dv = derive(s);
   EXPECT_DOUBLE_EQ(hydroGeometry(s, dv).ramp_time, 2 / s.drive.frequency);
   EXPECT_EQ(hydroGeometry(s, dv).cells, s.hydro.cells);
-  EXPECT_EQ(hydroRunOptions(s).max_cycles, static_cast<int>(30 * s.drive.frequency));
-  EXPECT_EQ(hydroRunOptions(paper("dry", {"run.duration=0.2"})).max_cycles, 8);
-  EXPECT_EQ(hydroRunOptions(s).samples_per_cycle, s.run.phases_per_cycle);
+  EXPECT_EQ(hydroRunOptions(s, dv).max_cycles, static_cast<int>(30 * s.drive.frequency));
+  const Scene brief = paper("dry", {"run.duration=0.2"});
+  EXPECT_EQ(hydroRunOptions(brief, derive(brief)).max_cycles, 8);
+  EXPECT_EQ(hydroRunOptions(s, dv).samples_per_cycle, s.run.phases_per_cycle);
 }
 
 TEST(HydroModel, EffectiveRestitutionOfAConstantLawIsItsE) {
