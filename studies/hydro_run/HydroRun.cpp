@@ -47,14 +47,18 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& dv,
   return c;
 }
 
-HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
-                              std::FILE* progress) {
+void requireHydroScene(const Scene& scene, const std::string& scene_name) {
   if (scene.drive.frequency <= 0)
     throw std::runtime_error(scene_name +
                              ": granwave hydro needs a driven scene (drive.frequency > 0)");
   if (scene.container.periodic_z)
     throw std::runtime_error(
         scene_name + ": granwave hydro needs bottom and lid (container.periodic_z = false)");
+}
+
+HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
+                              std::FILE* progress) {
+  requireHydroScene(scene, scene_name);
   const SceneDerived dv = derive(scene);
   const hydro::GranularHydro1D pde(hydroGeometry(scene, dv), constitutiveModel(scene, dv),
                                    scene.particles.count * dv.mass / scene.container.width,

@@ -18,6 +18,10 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& derived,
                                 const hydro::HydroResult& result,
                                 const hydro::HydroRunOptions& options);
 
+// A scene without drive or without bottom and lid is refused with a one-line
+// std::runtime_error naming `scene_name`.
+void requireHydroScene(const Scene& scene, const std::string& scene_name);
+
 // Runs the scene. A scene without drive or without bottom and lid is refused with a one-line
 // std::runtime_error naming `scene_name`; a solver failure is a hydro::HydroFailure. A line on
 // `progress` (nullptr: none) says how many cycles it may take.
