@@ -66,27 +66,32 @@ Hydro2DRunContent hydro2DRunContent(const Scene& scene, const hydro::GranularHyd
   return c;
 }
 
-Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_name,
-                                  std::FILE* progress) {
-  requireHydroScene(scene, scene_name);
-  const SceneDerived dv = derive(scene);
+std::unique_ptr<hydro::GranularHydro2D> hydro2DOperator(const Scene& scene,
+                                                        const SceneDerived& dv) {
   hydro::ConstitutiveModel model = constitutiveModel(scene, dv);
   model.side_wall_width = 0;  // side walls are explicit in 2D (container.periodic_x = false)
   const hydro::HydroColumns grid{hydroColumns(scene), scene.container.width,
                                  scene.container.periodic_x};
   const hydro::HydroGeometry geometry = hydroGeometry(scene, dv);
-  const hydro::GranularHydro2D op(
+  return std::make_unique<hydro::GranularHydro2D>(
       geometry, grid, model,
       hydro::perturbedCellMasses(grid.columns, geometry.cells,
                                  scene.particles.count * dv.mass / scene.container.width,
                                  scene.hydro.perturbation, scene.run.seed),
       hydroRegularisation(scene));
+}
+
+Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_name,
+                                  std::FILE* progress) {
+  requireHydroScene(scene, scene_name);
+  const SceneDerived dv = derive(scene);
+  const std::unique_ptr<hydro::GranularHydro2D> op = hydro2DOperator(scene, dv);
   const hydro::Hydro2DRunOptions o = hydro2DRunOptions(scene, dv);
   if (progress)
     fmt::print(progress, "  integrating {} cycles ({} columns x {} cells)...\n", o.cycles,
-               grid.columns, geometry.cells);
-  hydro::HydroSimulation2D sim(op, o);
-  return hydro2DRunContent(scene, op, sim.run(), o);
+               op->columns(), op->cells());
+  hydro::HydroSimulation2D sim(*op, o);
+  return hydro2DRunContent(scene, *op, sim.run(), o);
 }
 
 }  // namespace granwave

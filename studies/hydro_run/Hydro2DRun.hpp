@@ -6,6 +6,7 @@
 // run.seed), integrated for the 1D run's cycles (hydro/HydroSimulation2D.hpp), and what the 2D
 // run file holds of it (studies/run_files/Hydro2DRunFile.hpp).
 #include <cstdio>
+#include <memory>
 #include <string>
 
 #include "hydro/HydroSimulation2D.hpp"
@@ -17,6 +18,11 @@ namespace granwave {
 
 // hydro.columns, or one per 4 d of the width when 0.
 int hydroColumns(const Scene& scene);
+
+// The scene's 2D operator: its closures (side walls explicit, so no 1D side-wall sink), the
+// columns, the seeded column masses.
+std::unique_ptr<hydro::GranularHydro2D> hydro2DOperator(const Scene& scene,
+                                                        const SceneDerived& derived);
 
 // The run's options: the 1D run's sampling, cycle budget, tolerances and start, the window
 // the last two cycles.
