@@ -58,14 +58,6 @@ void checkArguments(const Snapshot& s, double width, double d, const LayerSurfac
                                 " x but " + std::to_string(s.z.size()) + " z positions");
 }
 
-// The area-fraction field phi[column][bin] of the snapshot, bins from z_lo (above the plate).
-struct AreaFractionGrid {
-  int columns = 0, bins = 0;
-  double z_lo = 0, dz = 0;
-  std::vector<double> phi;
-  double at(int i, int b) const { return phi[static_cast<std::size_t>(i) * bins + b]; }
-};
-
 AreaFractionGrid coarseGrain(const Snapshot& s, double width, double d, bool periodic_x, int n,
                              const LayerSurfaceOptions& o) {
   AreaFractionGrid g;
@@ -128,22 +120,9 @@ double crossing(const AreaFractionGrid& g, int i, double level, bool& thin) {
   return g.z_lo + (b + (f0 - level) / (f0 - f1)) * g.dz;
 }
 
-}  // namespace
-
-LayerSurface layerSurface(const Snapshot& s, double width, double d, bool periodic_x,
-                          const LayerSurfaceOptions& o) {
-  checkArguments(s, width, d, o);
-  const int n = std::max(1, static_cast<int>(std::lround(width / d)));
-  LayerSurface r;
-  r.profile.column_width = width / n;
-  r.profile.diameter = d;
-  r.profile.periodic_x = periodic_x;
-  r.profile.height.assign(n, 0.0);
-  if (s.x.empty()) {
-    r.thin_columns = n;
-    return r;
-  }
-  const AreaFractionGrid g = coarseGrain(s, width, d, periodic_x, n, o);
+// The bulk value and each column's crossing of the grid (the header's rule).
+void surfaceOfGrid(const AreaFractionGrid& g, const LayerSurfaceOptions& o, LayerSurface& r) {
+  const int n = g.columns;
   std::vector<double> peak(n);
   for (int i = 0; i < n; ++i) {
     peak[i] = 0;
@@ -158,6 +137,70 @@ LayerSurface layerSurface(const Snapshot& s, double width, double d, bool period
     r.profile.height[i] = crossing(g, i, level, thin);
     r.thin_columns += thin;
   }
+}
+
+// phi blurred by the particles' kernel along x (wrapped or mirrored as their deposit) and z.
+void blur(AreaFractionGrid& g, double width, double d, bool periodic_x,
+          const LayerSurfaceOptions& o) {
+  const double sigma = o.kernel_width * d, w = width / g.columns;
+  const double sx = sigma / w, sz = sigma / g.dz;
+  const int rx = static_cast<int>(std::ceil(3 * sx)), rz = static_cast<int>(std::ceil(3 * sz));
+  std::vector<double> qx(rx + 1), qz(rz + 1), wx(2 * rx + 1), wz(2 * rz + 1);
+  for (int j = 0; j <= rx; ++j) qx[j] = std::exp(-0.5 * j * j / (sx * sx));
+  for (int j = 0; j <= rz; ++j) qz[j] = std::exp(-0.5 * j * j / (sz * sz));
+  gaussianWeights(0.0, sx, rx, qx, wx);
+  gaussianWeights(0.0, sz, rz, qz, wz);
+  std::vector<double> along_x(g.phi.size(), 0.0);
+  for (int i = 0; i < g.columns; ++i)
+    for (int a = -rx; a <= rx; ++a) {
+      const int c = columnIndex(i + a, g.columns, periodic_x);
+      for (int b = 0; b < g.bins; ++b)
+        along_x[static_cast<std::size_t>(c) * g.bins + b] += wx[a + rx] * g.at(i, b);
+    }
+  std::fill(g.phi.begin(), g.phi.end(), 0.0);
+  for (int i = 0; i < g.columns; ++i)
+    for (int b = 0; b < g.bins; ++b)
+      for (int a = -rz; a <= rz; ++a)
+        if (b + a >= 0 && b + a < g.bins)
+          g.phi[static_cast<std::size_t>(i) * g.bins + b + a] +=
+              wz[a + rz] * along_x[static_cast<std::size_t>(i) * g.bins + b];
+}
+
+LayerSurface emptySurface(double width, double d, bool periodic_x, int n) {
+  LayerSurface r;
+  r.profile.column_width = width / n;
+  r.profile.diameter = d;
+  r.profile.periodic_x = periodic_x;
+  r.profile.height.assign(n, 0.0);
+  return r;
+}
+
+}  // namespace
+
+LayerSurface layerSurface(const Snapshot& s, double width, double d, bool periodic_x,
+                          const LayerSurfaceOptions& o) {
+  checkArguments(s, width, d, o);
+  const int n = std::max(1, static_cast<int>(std::lround(width / d)));
+  LayerSurface r = emptySurface(width, d, periodic_x, n);
+  if (s.x.empty()) {
+    r.thin_columns = n;
+    return r;
+  }
+  surfaceOfGrid(coarseGrain(s, width, d, periodic_x, n, o), o, r);
+  return r;
+}
+
+LayerSurface layerSurfaceOfField(AreaFractionGrid g, double width, double d, bool periodic_x,
+                                 const LayerSurfaceOptions& o) {
+  checkArguments(Snapshot{}, width, d, o);
+  const int n = std::max(1, static_cast<int>(std::lround(width / d)));
+  if (g.columns != n || g.bins < 1 || !(g.dz > 0) ||
+      g.phi.size() != static_cast<std::size_t>(g.columns) * g.bins)
+    throw std::invalid_argument("layer surface of a field: the grid must have " +
+                                std::to_string(n) + " columns and a phi per column and bin");
+  LayerSurface r = emptySurface(width, d, periodic_x, n);
+  blur(g, width, d, periodic_x, o);
+  surfaceOfGrid(g, o, r);
   return r;
 }
 

@@ -24,6 +24,8 @@
 //
 // A column whose phi never reaches fraction phi_b (a trough emptied by a wave, or a dilute
 // gas) has no layer above that level: h_i = 0, counted in `thin_columns`.
+#include <vector>
+
 #include "coarse_grain/SurfaceProfile.hpp"
 #include "particles/Snapshot.hpp"
 
@@ -45,5 +47,23 @@ struct LayerSurface {
 // bin, a fraction outside (0, 1), or snapshot arrays x and z of different lengths.
 LayerSurface layerSurface(const Snapshot& snapshot, double width, double diameter, bool periodic_x,
                           const LayerSurfaceOptions& options = {});
+
+// The area fraction phi[column][bin] on the surface's columns (round(width / d) of them) and on
+// bins of z_bin d from z_lo above the plate (bin b centred at z_lo + b dz): what the particles'
+// kernel makes of them, or a continuum's field sampled at the bin centres.
+struct AreaFractionGrid {
+  int columns = 0, bins = 0;
+  double z_lo = 0, dz = 0;  // m
+  std::vector<double> phi;
+  double at(int i, int b) const { return phi[static_cast<std::size_t>(i) * bins + b]; }
+};
+
+// The surface of a field's layer by the same rule as layerSurface: a continuum's area
+// fraction, sampled on the grid, is first blurred by the kernel the particles' area is spread
+// with (the same normalised Gaussian weights, wrapped for periodic x, mirrored at side walls),
+// then its bulk value and crossings are found as for particles. The grid's columns must be
+// round(width / diameter). Throws std::invalid_argument as layerSurface.
+LayerSurface layerSurfaceOfField(AreaFractionGrid field, double width, double diameter,
+                                 bool periodic_x, const LayerSurfaceOptions& options = {});
 
 }  // namespace granwave

@@ -25,6 +25,7 @@ struct LocalState {
   S p;                  // total pressure: kinetic-collisional + contact, N/m
   S p_kinetic;          // n T (1 + Phi_P nu g2), N/m
   S viscosity;          // lambda_b + eta (d = 2 normal-stress coefficient), kg/s, limited
+  S shear_viscosity;    // eta alone (the 2D operator's shear stress), kg/s, limited
   S kappa_theta;        // heat flux q = -kappa_theta d(theta)/dz, kg/s, limited
   S cooling;            // D_c, W/m^2
   S sound_speed;        // adiabatic, m/s (contact part included)
@@ -93,6 +94,7 @@ LocalState<S> ConstitutiveModel::evaluate(const S& rho, const S& theta) const {
   s.p_kinetic = t.p;
   s.p = t.p + contact.pressure(nu);
   s.viscosity = (t.lambda_b + t.eta) * limiter;  // d = 2: lambda_b + 2 eta (d - 1)/d
+  s.shear_viscosity = t.eta * limiter;
   s.kappa_theta = t.kappa_theta * limiter;
   s.cooling = t.D_c;
   s.isothermal_speed2 = theta * (F + nuF_nu) + dpc_drho;

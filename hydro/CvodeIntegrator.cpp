@@ -2,6 +2,7 @@
 
 #include <cvode/cvode.h>
 #include <cvode/cvode_bandpre.h>
+#include <cvode/cvode_ls.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
@@ -34,6 +35,7 @@ struct CvodeIntegrator::Impl {
   void* cvode = nullptr;
   RightHandSide f;
   BandJacobian jacobian;
+  KrylovPreconditioner preconditioner;
   ComponentName name;
   std::vector<double> out;
   double t = 0;
@@ -67,6 +69,32 @@ struct CvodeIntegrator::Impl {
     try {
       return self->jacobian(t, N_VGetArrayPointer(y),
                             [J](int row, int col, double v) { SM_ELEMENT_B(J, row, col) = v; });
+    } catch (const std::exception& e) {
+      self->rhs_error = e.what();
+      return -1;
+    }
+  }
+
+  static int psetup(sunrealtype t, N_Vector y, N_Vector, sunbooleantype jok, sunbooleantype* jcur,
+                    sunrealtype gamma, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      bool recomputed = false;
+      const int flag =
+          self->preconditioner.setup(t, N_VGetArrayPointer(y), jok == SUNTRUE, gamma, recomputed);
+      *jcur = recomputed ? SUNTRUE : SUNFALSE;
+      return flag;
+    } catch (const std::exception& e) {
+      self->rhs_error = e.what();
+      return -1;
+    }
+  }
+
+  static int psolve(sunrealtype, N_Vector, N_Vector, N_Vector r, N_Vector z, sunrealtype,
+                    sunrealtype, int, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      return self->preconditioner.solve(N_VGetArrayPointer(r), N_VGetArrayPointer(z));
     } catch (const std::exception& e) {
       self->rhs_error = e.what();
       return -1;
@@ -170,10 +198,21 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
                 "CVodeSetJacEvalFrequency");
       break;
     case CvodeMethod::BdfKrylov:
-      m.LS = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.ctx);
+      m.LS = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, o.krylov_dimension, m.ctx);
       if (!m.LS) m.fail("SUNLinSol_SPGMR", -20);
       m.check(CVodeSetLinearSolver(m.cvode, m.LS, nullptr), "CVodeSetLinearSolver");
-      m.check(CVBandPrecInit(m.cvode, m.n, o.band_upper, o.band_lower), "CVBandPrecInit");
+      if (o.preconditioner.solve) {
+        m.preconditioner = o.preconditioner;
+        m.check(CVodeSetPreconditioner(m.cvode, Impl::psetup, Impl::psolve),
+                "CVodeSetPreconditioner");
+      } else {
+        m.check(CVBandPrecInit(m.cvode, m.n, o.band_upper, o.band_lower), "CVBandPrecInit");
+      }
+      if (o.linear_tolerance_factor > 0)
+        m.check(CVodeSetEpsLin(m.cvode, o.linear_tolerance_factor), "CVodeSetEpsLin");
+      if (o.jacobian_frequency > 0)
+        m.check(CVodeSetJacEvalFrequency(m.cvode, o.jacobian_frequency),
+                "CVodeSetJacEvalFrequency");
       break;
     case CvodeMethod::Adams:
       m.NLS = SUNNonlinSol_FixedPoint(m.y, 0, m.ctx);
@@ -228,6 +267,10 @@ CvodeStats CvodeIntegrator::stats() const {
   if (m.LS) {
     CVodeGetNumLinRhsEvals(m.cvode, &s.lin_rhs_evals);
     CVodeGetNumJacEvals(m.cvode, &s.jac_evals);
+    CVodeGetNumLinIters(m.cvode, &s.lin_iters);
+    CVodeGetNumLinConvFails(m.cvode, &s.lin_conv_fails);
+    CVodeGetNumPrecEvals(m.cvode, &s.prec_evals);
+    CVodeGetNumPrecSolves(m.cvode, &s.prec_solves);
   }
   return s;
 }

@@ -20,8 +20,19 @@ using BandJacobian = std::function<int(double t, const double* y, const BandMatr
 enum class CvodeMethod {
   BdfBanded,  // BDF, Newton, banded direct solver (the caller's Jacobian, else difference
               // quotients)
-  BdfKrylov,  // BDF, Newton-Krylov (GMRES) with a band preconditioner
+  BdfKrylov,  // BDF, Newton-Krylov (GMRES) with a band preconditioner, or the caller's
+              // (CvodeOptions::preconditioner)
   Adams,      // Adams-Moulton, functional (fixed-point) iteration: non-stiff reference
+};
+
+// A left preconditioner P ~ I - gamma J of the caller's for BdfKrylov (CVODE's psetup and
+// psolve). setup(t, y, jacobian_ok, gamma) prepares P, reusing its saved Jacobian when
+// jacobian_ok allows, and returns whether it evaluated a new one in `recomputed`; solve(r, z)
+// sets z = P^-1 r. Both return 0, > 0 for a recoverable failure, < 0 for an unrecoverable one.
+struct KrylovPreconditioner {
+  std::function<int(double t, const double* y, bool jacobian_ok, double gamma, bool& recomputed)>
+      setup;
+  std::function<int(const double* r, double* z)> solve;
 };
 
 struct CvodeOptions {
@@ -36,11 +47,15 @@ struct CvodeOptions {
   std::vector<double> constraints;  // empty = none; else per component 0, 1, 2 (CVODE semantics)
   BandJacobian jacobian;            // BdfBanded: exact Jacobian; empty = difference quotients
   int jacobian_frequency = 0;       // max steps between Jacobian evaluations (0 = CVODE's 51)
+  KrylovPreconditioner preconditioner;  // BdfKrylov: empty = CVODE's band preconditioner
+  int krylov_dimension = 0;             // BdfKrylov: GMRES's largest subspace (0 = 5)
+  double linear_tolerance_factor = 0;   // BdfKrylov: CVodeSetEpsLin (0 = CVODE's 0.05)
 };
 
 struct CvodeStats {
   long steps = 0, rhs_evals = 0, lin_rhs_evals = 0, jac_evals = 0;
   long err_test_fails = 0, nonlin_conv_fails = 0, nonlin_iters = 0;
+  long lin_iters = 0, lin_conv_fails = 0, prec_evals = 0, prec_solves = 0;  // Krylov
   double last_step = 0;
   int last_order = 0;
 };

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "hydro/LayerCell.hpp"
+
 namespace granwave::hydro {
 
 namespace {
@@ -15,21 +17,6 @@ constexpr int kBlockColours = 5;
 
 double closePackedDensity(const ConstitutiveModel& m) {
   return kHexagonalClosePacking * m.mass / m.diskArea();
-}
-
-// The wall contact (see contactStress in the header): the elastic stress of the penetration
-// p = (r - x)_+ (x = gap/sigma) and the contact indicator p^2/(p^2 + p_1^2), both smooth.
-template <class S>
-struct WallContact {
-  S elastic, stiffness, indicator;  // stress, d(stress)/d(penetration) per metre, in contact
-};
-template <class S>
-WallContact<S> wallContact(const S& gap, double sigma, double scale, const HydroRegularisation& n) {
-  const double r = n.wall_contact_range, p0 = n.wall_contact_stiffness;
-  const S pen = smoothPositivePart(S(r - gap / sigma), 1e-3 * r);
-  const S k = pen / p0;
-  return {scale * k * k * k, 3.0 * scale * k * k / (p0 * sigma),
-          pen * pen / (pen * pen + 0.01 * p0 * p0)};
 }
 
 }  // namespace
@@ -108,26 +95,6 @@ double GranularHydro1D::contactStress(double gap, double speed, double rho, doub
 
 namespace {
 
-// The cell as the closures see it (GranularHydro1D::cellView in the header).
-template <class S>
-struct EffectiveCell {
-  S rho, length, theta;
-};
-template <class S, class R>
-EffectiveCell<S> effectiveCell(const R& reg, double m_c, double theta_unit, const S& z0,
-                               const S& z1, const S& s) {
-  using std::exp;
-  using std::sqrt;
-  const S length = smoothPositivePart(S(z1 - z0), reg.length_floor);
-  const S gap = (reg.rho_max - m_c / length) / reg.packing_width;
-  // s(x) = (x + sqrt(x^2 + 4))/2 = 2/(sqrt(x^2 + 4) - x): the second form keeps its digits
-  // when the cell is packed past close packing (x << 0), where the first cancels to 0.
-  const S map = value(gap) >= 0 ? S(0.5 * (gap + sqrt(gap * gap + 4.0)))
-                                : S(2.0 / (sqrt(gap * gap + 4.0) - gap));
-  const S rho = reg.rho_max - reg.packing_width * map;
-  return {rho, length, S(theta_unit * exp(s) + reg.theta_min)};
-}
-
 // Heat fluxes through interior nodes, central in the temperature.
 template <class S, class W>
 void heatFluxes(int N, W& w) {
@@ -135,29 +102,6 @@ void heatFluxes(int N, W& w) {
     const S kappa = 0.5 * (w.local[j - 1].kappa_theta + w.local[j].kappa_theta);
     w.heat[j] = -kappa * (w.theta[j] - w.theta[j - 1]) / (0.5 * (w.length[j - 1] + w.length[j]));
   }
-}
-
-// The stress a wall exerts on the boundary node next to it, and the power its dashpot and
-// collisions take from the wall cell: [stress, dashpot heating, collisional loss].
-template <class S>
-struct WallExchange {
-  S stress, heating, loss;
-};
-// The dashpot makes the boundary node's landing completely inelastic, as the layer's is (its
-// particles' bounce is the wall collisions' loss, a separate term): the cell's acoustic
-// impedance rho c (no reflected sound) plus critical damping 2 sqrt(k m_node) of the node on
-// the contact's stiffness k; it acts while approaching (v times a smooth step in v, exactly 0
-// at rest), and its work heats the wall cell.
-template <class S>
-WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S>& cell,
-                             const S& rho, double sigma, double scale, double u_width,
-                             double node_mass, const HydroRegularisation& numerics) {
-  using std::sqrt;
-  const WallContact<S> c = wallContact(gap, sigma, scale, numerics);
-  const S step = 0.5 * (1.0 + approach / smoothAbs(approach, u_width));
-  const S damping = rho * cell.sound_speed + 2.0 * sqrt(c.stiffness * node_mass + 1e-30);
-  const S dashpot = damping * approach * step * c.indicator;
-  return {c.elastic + dashpot, dashpot * approach, c.indicator * cell.wall_loss * cell.p_kinetic};
 }
 
 }  // namespace
@@ -279,16 +223,7 @@ double GranularHydro1D::labEnergy(double t, const double* U) const {
 }
 
 double GranularHydro1D::contactEnergy(double gap) const {
-  // The integral of the elastic stress from the gap out to the end of the contact's range
-  // (Simpson's rule; the stress is a smooth cubic of the penetration there).
-  const double end = 1.2 * numerics_.wall_contact_range * model_.sigma;
-  if (gap >= end) return 0;
-  const int n = 200;
-  const double h = (end - gap) / n;
-  double sum = 0;
-  for (int k = 0; k <= n; ++k)
-    sum += (k == 0 || k == n ? 1 : (k % 2 ? 4 : 2)) * contactStress(gap + k * h, 0, 0, 0);
-  return sum * h / 3;
+  return wallContactEnergy(gap, model_.sigma, reg_.contact_scale, numerics_);
 }
 
 GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {

@@ -1,6 +1,6 @@
-#include <cmath>
+#include "hydro/HydroGeometry.hpp"
 
-#include "hydro/GranularHydro1D.hpp"
+#include <cmath>
 
 namespace granwave::hydro {
 

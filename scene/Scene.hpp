@@ -92,7 +92,13 @@ struct RunSpec {
 enum class HydroStart { Settled, Spread };
 
 struct HydroSpec {
-  int cells = 100;     // Lagrangian cells of equal mass
+  // 1: the horizontally averaged layer; 2: the x-z plane in columns (docs/hydro.md, "The 2D
+  // model"), periodic or between side walls as container.periodic_x says.
+  int dimensions = 1;
+  int cells = 100;  // Lagrangian cells of equal mass (per column in 2D)
+  int columns = 0;  // 2D: columns across the width; 0 = one per 4 d
+  // 2D: the RMS of the seeded relative perturbation of the columns' masses (run.seed).
+  double perturbation = 0.01;
   double rtol = 1e-4;  // CVODE relative tolerance
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;

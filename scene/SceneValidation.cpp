@@ -128,6 +128,12 @@ void Checker::singleKeys() const {
   if (s_.run.seed > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max()))
     fail("run.seed", std::to_string(s_.run.seed), "must be an integer in [0, 2^63 - 1]");
   zeroOrWithin("run.gravity", s_.run.gravity, 1e-3, 1e4, "m/s^2, magnitude");
+  atLeast("hydro.dimensions", s_.hydro.dimensions, 1);
+  atMost("hydro.dimensions", s_.hydro.dimensions, 2, "1: the averaged layer, 2: the x-z plane");
+  atLeast("hydro.columns", s_.hydro.columns, 0);
+  atMost("hydro.columns", s_.hydro.columns, 10000, "columns across the width; 0 = one per 4 d");
+  within("hydro.perturbation", s_.hydro.perturbation, '[', 0.0, 0.1, ']',
+         "RMS of the columns' relative masses");
   atLeast("hydro.cells", s_.hydro.cells, 8);
   atMost("hydro.cells", s_.hydro.cells, 100000, "cells across the height");
   within("hydro.rtol", s_.hydro.rtol, '[', 1e-12, 0.1, ']', "relative tolerance");

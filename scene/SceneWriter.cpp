@@ -151,7 +151,10 @@ std::string sceneToToml(const Scene& s) {
   w.key("seed", std::to_string(s.run.seed), "random initial state");
   w.key("gravity", s.run.gravity, "m/s^2");
   w.section("hydro");
+  w.integer("dimensions", s.hydro.dimensions);
   w.integer("cells", s.hydro.cells);
+  w.integer("columns", s.hydro.columns);
+  w.key("perturbation", s.hydro.perturbation);
   w.key("rtol", s.hydro.rtol);
   w.key("atol", s.hydro.atol);
   w.key("restitution_model",

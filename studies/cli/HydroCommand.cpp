@@ -5,9 +5,11 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 
+#include "coarse_grain/FieldsFile.hpp"
 #include "files/OutputPath.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/OptionChecks.hpp"
+#include "studies/hydro_run/Hydro2DRun.hpp"
 #include "studies/hydro_run/HydroRun.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/runner/InterruptFlag.hpp"
@@ -69,10 +71,35 @@ void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunCon
   fmt::print("output          {}\n", out);
 }
 
+void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const std::string& out) {
+  fmt::print("scene           {}\n", opt.scene_path);
+  fmt::print("hydro 2D        {} columns x {} cells over {:g} m, {}, rtol {:g}\n", c.columns,
+             c.cells, c.width, c.periodic ? "periodic" : "side walls", c.rtol);
+  fmt::print("mass            conserved to {:.1e}\n", c.mass_drift);
+  fmt::print(
+      "cost            {:.2f} CPU-s ({:.3f} per cycle, {} cycles), {} steps, {} RHS evaluations, "
+      "{} linear iterations, {} preconditioner Jacobians\n",
+      c.cpu_seconds, c.cpu_seconds / static_cast<double>(c.cycles), c.cycles, c.steps, c.rhs_evals,
+      c.linear_iterations, c.preconditioner_jacobians);
+  fmt::print("output          {} (ParaView: {})\n", out, xdmfSidecarPath(out));
+}
+
+int run2D(const HydroOptions& opt, const Scene& scene, const std::string& out) {
+  files::requireDistinct({{"scene", opt.scene_path}},
+                         {{"hydro run file", out}, {"XDMF sidecar", xdmfSidecarPath(out)}});
+  const Hydro2DRunContent content =
+      runHydro2DScene(scene, opt.scene_path, opt.quiet ? nullptr : stderr);
+  writeHydro2DRunFile(out, content);
+  print2DSummary(opt, content, out);
+  return 0;
+}
+
 }  // namespace
 
 void addHydroCommand(CLI::App& app, HydroOptions& opt) {
-  CLI::App* cmd = app.add_subcommand("hydro", "Integrate the 1D granular hydrodynamics of a scene");
+  CLI::App* cmd = app.add_subcommand(
+      "hydro",
+      "Integrate the granular hydrodynamics of a scene (1D, or x-z with hydro.dimensions = 2)");
   cmd->add_option("scene", opt.scene_path, "Scene file (TOML; [hydro] keys, docs/scenes.md)")
       ->required()
       ->check(regularInputFile());
@@ -87,6 +114,7 @@ int runHydro(const HydroOptions& opt) {
   const Scene scene = parseSceneFile(opt.scene_path, opt.overrides);
   std::string out = opt.output;
   if (out.empty()) out = std::filesystem::path(opt.scene_path).stem().string() + ".hydro.h5";
+  if (scene.hydro.dimensions == 2) return run2D(opt, scene, out);
   files::requireDistinct({{"scene", opt.scene_path}}, {{"hydro run file", out}});
   // SIGINT/SIGTERM end the run at the next phase with exit 130, nothing written.
   const std::atomic<bool>& interrupt = installInterruptFlag();

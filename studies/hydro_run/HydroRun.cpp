@@ -61,17 +61,13 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& dv,
   return c;
 }
 
-namespace {
-
-// Scenes the continuum cannot integrate, refused before any work (exit 2, one line).
-void refuseUnsupportedScene(const Scene& scene, const SceneDerived& dv,
-                            const std::string& scene_name) {
+void requireHydroScene(const Scene& scene, const std::string& scene_name) {
   const auto refuse = [&scene_name](const std::string& why) {
     throw SceneError(scene_name + ": granwave hydro needs " + why);
   };
   if (scene.drive.frequency <= 0) refuse("a driven scene (drive.frequency > 0)");
   // Gamma = 0 is a plate at rest: the layer settles, and no front or period exists to find.
-  if (!(dv.amplitude > 0))
+  if (!(derive(scene).amplitude > 0))
     refuse("a driven scene (drive.gamma or drive.amplitude > 0; the plate amplitude is 0)");
   if (scene.container.periodic_z) refuse("bottom and lid (container.periodic_z = false)");
   // Walton's law with e_t0 = -1 makes every contact smooth: no spin is exchanged, the
@@ -82,12 +78,10 @@ void refuseUnsupportedScene(const Scene& scene, const SceneDerived& dv,
         "is smooth: use hydro.particles = \"smooth\", the same physics)");
 }
 
-}  // namespace
-
 HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
                               std::FILE* progress, const std::atomic<bool>* interrupt) {
+  requireHydroScene(scene, scene_name);
   const SceneDerived dv = derive(scene);
-  refuseUnsupportedScene(scene, dv, scene_name);
   const hydro::GranularHydro1D pde(hydroGeometry(scene, dv), constitutiveModel(scene, dv),
                                    scene.particles.count * dv.mass / scene.container.width,
                                    hydroRegularisation(scene), scene.hydro.energy_budget);

@@ -19,11 +19,13 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& derived,
                                 const hydro::HydroResult& result,
                                 const hydro::HydroRunOptions& options);
 
-// Runs the scene. A scene the continuum cannot integrate (no drive, no bottom and lid, rough
-// particles that are smooth) is refused with a one-line SceneError naming `scene_name`; a
-// solver failure is a hydro::HydroFailure; an `interrupt` set (SIGINT/SIGTERM) ends it with
-// hydro::HydroInterrupted at the next phase. A line on `progress` (nullptr: none) says how
-// many cycles it may take.
+// Refuses a scene the continuum cannot integrate (no drive, no bottom and lid, rough particles
+// that are smooth) with a one-line SceneError naming `scene_name`.
+void requireHydroScene(const Scene& scene, const std::string& scene_name);
+
+// Runs the scene (requireHydroScene first). A solver failure is a hydro::HydroFailure; an
+// `interrupt` set (SIGINT/SIGTERM) ends it with hydro::HydroInterrupted at the next phase. A
+// line on `progress` (nullptr: none) says how many cycles it may take.
 HydroRunContent runHydroScene(const Scene& scene, const std::string& scene_name,
                               std::FILE* progress, const std::atomic<bool>* interrupt = nullptr);
 

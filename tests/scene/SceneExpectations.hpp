@@ -42,7 +42,10 @@ inline void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.run.trajectory_stride, b.run.trajectory_stride);
   EXPECT_EQ(a.run.seed, b.run.seed);
   EXPECT_EQ(a.run.gravity, b.run.gravity);
+  EXPECT_EQ(a.hydro.dimensions, b.hydro.dimensions);
   EXPECT_EQ(a.hydro.cells, b.hydro.cells);
+  EXPECT_EQ(a.hydro.columns, b.hydro.columns);
+  EXPECT_EQ(a.hydro.perturbation, b.hydro.perturbation);
   EXPECT_EQ(a.hydro.rtol, b.hydro.rtol);
   EXPECT_EQ(a.hydro.atol, b.hydro.atol);
   EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);

@@ -51,6 +51,9 @@ TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
                                     "run.seed=9007199254740993",
                                     "run.gravity=9.80665",
                                     "hydro.cells=64",
+                                    "hydro.dimensions=2",
+                                    "hydro.columns=12",
+                                    "hydro.perturbation=0.003",
                                     "hydro.rtol=1e-7",
                                     "hydro.atol=1e-11",
                                     "hydro.restitution_model=constant"});

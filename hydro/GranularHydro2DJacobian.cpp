@@ -1,0 +1,92 @@
+// The exact Jacobian of GranularHydro2D by forward-mode differentiation of its right-hand side
+// (hydro/Scalar.hpp), coloured: within a column, blocks five apart never meet in a row (as in
+// 1D), and columns more than 2 R apart (R = kColumnReach) never meet either, so one pass per
+// column colour, with 5 K directional derivatives, gives every element.
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "hydro/GranularHydro2D.hpp"
+#include "hydro/Layer2DResidual.hpp"
+
+namespace granwave::hydro {
+
+namespace {
+
+constexpr int kBlockColours = 5;
+
+// Colours of the columns: equal colours are more than 2 R apart, cyclically when periodic
+// (the columns past the last whole group of 2 R + 1 get colours of their own).
+std::vector<int> columnColours(int Nx, bool periodic, int reach) {
+  const int C = 2 * reach + 1;
+  std::vector<int> colour(Nx);
+  const int whole = periodic ? Nx / C * C : Nx;
+  for (int i = 0; i < Nx; ++i) colour[i] = Nx <= C ? i : (i < whole ? i % C : C + i - whole);
+  return colour;
+}
+
+// The distinct columns within `reach` of column i.
+std::vector<int> columnsNear(int i, int Nx, bool periodic, int reach) {
+  std::vector<int> near;
+  for (int d = -reach; d <= reach; ++d) {
+    int c = i + d;
+    if (periodic) c = ((c % Nx) + Nx) % Nx;
+    if (c < 0 || c >= Nx) continue;
+    bool seen = false;
+    for (int e : near) seen = seen || e == c;
+    if (!seen) near.push_back(c);
+  }
+  return near;
+}
+
+}  // namespace
+
+template <int Colours>
+int GranularHydro2D::jacobianWith(double t, const double* U, const SparseWriter& write,
+                                  bool in_column_only, JetWorkspace<Colours>& j) const {
+  using J = Jet<Colours>;
+  const int K = vars_, Nx = x_.columns, N = g_.cells, n_col = columnSize();
+  const std::vector<int> colour = columnColours(Nx, x_.periodic, kColumnReach);
+  const int passes = *std::max_element(colour.begin(), colour.end()) + 1;
+  auto slot = [&](int m) { return (m / K) % kBlockColours * K + m % K; };
+  auto blockEnd = [&](int b) { return b == N ? 2 : K; };
+  for (int pass = 0; pass < passes; ++pass) {
+    for (int k = 0; k < size(); ++k) j.U[k] = J(U[k], Eigen::Matrix<double, Colours, 1>::Zero());
+    for (int i = 0; i < Nx; ++i)
+      if (colour[i] == pass)
+        for (int m = 0; m < n_col; ++m)
+          j.U[columnOffset(i) + m] = J(U[columnOffset(i) + m], Colours, slot(m));
+    if (residual(t, j.U.data(), j.dU.data(), j.w) != 0) return 1;
+    for (int i = 0; i < Nx; ++i) {
+      if (colour[i] != pass) continue;
+      const std::vector<int> rows =
+          in_column_only ? std::vector<int>{i} : columnsNear(i, Nx, x_.periodic, kColumnReach);
+      for (int m = 0; m < n_col; ++m) {
+        const int col = columnOffset(i) + m, b = m / K, sl = slot(m);
+        for (int r : rows)
+          for (int rb = std::max(0, b - 2); rb <= std::min(N, b + 2); ++rb)
+            for (int e = 0; e < blockEnd(rb); ++e) {
+              const int row = columnOffset(r) + rb * K + e;
+              const double d = j.dU[row].derivatives()[sl];
+              if (!std::isfinite(d)) return 1;
+              if (d != 0) write(row, col, d);
+            }
+      }
+    }
+  }
+  return 0;
+}
+
+int GranularHydro2D::jacobian(double t, const double* U, const SparseWriter& write,
+                              bool in_column_only) const {
+  if (rough()) {
+    if (!rough_jets_)
+      rough_jets_ = std::make_unique<JetWorkspace<30>>(x_.columns, g_.cells, x_.periodic, size());
+    return jacobianWith(t, U, write, in_column_only, *rough_jets_);
+  }
+  if (!smooth_jets_)
+    smooth_jets_ = std::make_unique<JetWorkspace<25>>(x_.columns, g_.cells, x_.periodic, size());
+  return jacobianWith(t, U, write, in_column_only, *smooth_jets_);
+}
+
+}  // namespace granwave::hydro

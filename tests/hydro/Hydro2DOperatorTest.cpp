@@ -1,0 +1,140 @@
+// The 2D operator's right-hand side and Jacobian: a layer uniform in x is the 1D operator in
+// every column (the horizontal terms vanish exactly), the forward-mode Jacobian equals central
+// finite differences on a layer whose columns differ in every variable (periodic and between
+// side walls, smooth and rough), and the cell masses change only by fluxes that cancel.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "Hydro2DTestSupport.hpp"
+
+using namespace granwave::hydro;
+using test::kD;
+using test::kMass;
+
+namespace {
+
+ConstitutiveModel wetModel(bool rough) {
+  ConstitutiveModel m =
+      test::beadModel(RestitutionClosure::wet(0.91, 0.0698), RestitutionClosure::wet(0.91, 0.0698));
+  m.rough.enabled = rough;
+  return m;
+}
+
+}  // namespace
+
+TEST(Hydro2DOperator, FlatLayerIsTheColumnOperatorInEveryColumn) {
+  for (bool rough : {false, true}) {
+    const ConstitutiveModel m = wetModel(rough);
+    const HydroGeometry g = test::drivenBox(16);
+    const double M = 300 * kMass / (30 * kD);
+    const GranularHydro1D pde(g, m, M);
+    const GranularHydro2D op(g, {4, 8 * kD, true}, m, std::vector<double>(4 * 16, M / 16));
+    const std::vector<double> V = test::rumpledColumn(pde, 3);
+    std::vector<double> U(op.size(), 0.0);
+    for (int i = 0; i < 4; ++i) test::putColumn(op, pde, V, i, U);
+    std::vector<double> dV(pde.size()), dU(op.size());
+    const double t = 0.013;
+    ASSERT_EQ(pde.rightHandSide(t, V.data(), dV.data()), 0);
+    ASSERT_EQ(op.rightHandSide(t, U.data(), dU.data()), 0);
+    for (int i = 0; i < 4; ++i) {
+      for (int j = 0; j <= 16; ++j) {
+        EXPECT_NEAR(dU[op.heightIndex(i, j)], dV[pde.heightIndex(j)], 1e-12);
+        const double a = dV[pde.velocityIndex(j)];
+        EXPECT_NEAR(dU[op.velocityIndex(i, j)], a, 1e-11 * (1 + std::abs(a))) << j;
+        if (j == 16) break;
+        const double s = dV[pde.temperatureIndex(j)];
+        EXPECT_NEAR(dU[op.temperatureIndex(i, j)], s, 1e-11 * (1 + std::abs(s))) << j;
+        if (rough) {
+          EXPECT_NEAR(dU[op.rotationIndex(i, j)], dV[pde.rotationIndex(j)], 1e-9);
+        }
+        EXPECT_EQ(dU[op.fluxIndex(i, j)], 0.0);
+        EXPECT_EQ(dU[op.horizontalVelocityIndex(i, j)], 0.0);
+      }
+    }
+  }
+}
+
+namespace {
+
+void expectJacobianMatchesFiniteDifferences(bool periodic, bool rough, int columns) {
+  const ConstitutiveModel m = wetModel(rough);
+  const HydroGeometry g = test::drivenBox(8);
+  const double M = 300 * kMass / (30 * kD);
+  const GranularHydro1D pde(g, m, M);
+  const GranularHydro2D op(g, {columns, 2.0 * columns * kD, periodic}, m,
+                           std::vector<double>(columns * 8, M / 8));
+  const std::vector<double> U = test::rumpledLayer(op, pde, 11);
+  const int n = op.size();
+  const double t = 0.013;
+  std::vector<double> J(static_cast<std::size_t>(n) * n, 0.0), B(J.size(), 0.0);
+  ASSERT_EQ(op.jacobian(
+                t, U.data(), [&](int r, int c, double v) { J[r * n + c] += v; }, false),
+            0);
+  ASSERT_EQ(op.jacobian(
+                t, U.data(), [&](int r, int c, double v) { B[r * n + c] += v; }, true),
+            0);
+  std::vector<double> row_max(n, 0.0);
+  for (int r = 0; r < n; ++r)
+    for (int c = 0; c < n; ++c) row_max[r] = std::max(row_max[r], std::abs(J[r * n + c]));
+  std::vector<double> fp(n), fm(n);
+  for (int c = 0; c < n; ++c) {
+    const double h = 1e-6 * std::abs(U[c]) + 1e-12;
+    std::vector<double> Up = U, Um = U;
+    Up[c] += h;
+    Um[c] -= h;
+    ASSERT_EQ(op.rightHandSide(t, Up.data(), fp.data()), 0);
+    ASSERT_EQ(op.rightHandSide(t, Um.data(), fm.data()), 0);
+    for (int r = 0; r < n; ++r) {
+      const double fd = (fp[r] - fm[r]) / (2 * h);
+      ASSERT_NEAR(J[r * n + c], fd, 1e-5 * row_max[r] + 1e-12)
+          << op.componentName(r) << " by " << op.componentName(c);
+      const bool same_column = r / op.columnSize() == c / op.columnSize();
+      ASSERT_EQ(B[r * n + c], same_column ? J[r * n + c] : 0.0);
+      if (same_column && J[r * n + c] != 0) {
+        ASSERT_LE(std::abs(r - c), op.halfBand()) << "outside the column band";
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST(Hydro2DOperator, PeriodicJacobianEqualsFiniteDifferences) {
+  expectJacobianMatchesFiniteDifferences(true, false, 9);
+}
+
+TEST(Hydro2DOperator, SideWallJacobianEqualsFiniteDifferences) {
+  expectJacobianMatchesFiniteDifferences(false, false, 8);
+}
+
+TEST(Hydro2DOperator, RoughJacobianOfFewColumnsEqualsFiniteDifferences) {
+  expectJacobianMatchesFiniteDifferences(true, true, 3);
+}
+
+TEST(Hydro2DOperator, CellMassesChangeOnlyByFluxesBetweenNeighbours) {
+  const ConstitutiveModel m = wetModel(false);
+  const HydroGeometry g = test::drivenBox(8);
+  const double M = 300 * kMass / (30 * kD);
+  const GranularHydro1D pde(g, m, M);
+  for (bool periodic : {true, false}) {
+    const GranularHydro2D op(g, {6, 12 * kD, periodic}, m, std::vector<double>(6 * 8, M / 8));
+    const std::vector<double> U = test::rumpledLayer(op, pde, 5);
+    std::vector<double> dU(op.size());
+    ASSERT_EQ(op.rightHandSide(0.01, U.data(), dU.data()), 0);
+    for (int k = 0; k < 8; ++k) {
+      double total = 0, scale = 0;
+      for (int i = 0; i < 6; ++i) {
+        const double left =
+            i > 0 ? dU[op.fluxIndex(i - 1, k)] : (periodic ? dU[op.fluxIndex(5, k)] : 0.0);
+        const double right = op.wallFace(i) ? 0.0 : dU[op.fluxIndex(i, k)];
+        total += left - right;
+        scale += std::abs(left) + std::abs(right);
+      }
+      EXPECT_NEAR(total, 0.0, 1e-14 * scale) << "layer " << k;
+    }
+    if (!periodic) {
+      for (int k = 0; k < 8; ++k) EXPECT_EQ(dU[op.fluxIndex(5, k)], 0.0);
+    }
+  }
+}
