@@ -1,5 +1,5 @@
 // The tiny stability study (tests/studies/data/tiny-stability.toml): f = 30 and 40 Hz,
-// Gamma = 3, 5, 6.
+// Gamma = 3, 6 (A = 0.41 d and 0.23 d at Gamma 3, 0.83 d and 0.47 d at Gamma 6).
 //
 // A plate that moves less than half a particle diameter (amplitude A = Gamma g / (2 pi f)^2)
 // cannot move a layer's particles past their neighbours: the layer stays caged, crystal or
