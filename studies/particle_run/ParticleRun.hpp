@@ -1,9 +1,9 @@
 #pragma once
 // One particle run as `granwave simulate` makes it (docs/commands.md): the engine on a scene
 // with its observers (the run file, the live fields, patterns, surface and layer states, the
-// centre of mass, the pooled pair impacts, the progress line), checkpoints that let the same command
-// continue a killed run bit for bit (studies/run_files/RunCheckpoint.hpp), and at the end the
-// outputs and the summary on stdout.
+// centre of mass, the pooled pair impacts, the progress line), checkpoints that let the same
+// command continue a killed run bit for bit (studies/run_files/RunCheckpoint.hpp), and at the end
+// the outputs and the summary on stdout.
 #include <chrono>
 #include <memory>
 #include <string>

@@ -80,8 +80,8 @@ std::vector<MomentumRatioPoint> momentumRatios(const SurfaceWavesConfig& c, cons
         const SurfaceWavePoint b{wet, c.width_d, c.periodic, c.rows, f, g, seed};
         const RunRecord &rd = runs.get(c.label(a)), &rw = runs.get(c.label(b));
         if (!rd.ok || !rw.ok) continue;
-        const Measurement r = waveMomentumRatio(readFieldsFile(rd.fieldsPath()),
-                                                readFieldsFile(rw.fieldsPath()), {});
+        const Measurement r =
+            waveMomentumRatio(readFieldsFile(rd.fieldsPath()), readFieldsFile(rw.fieldsPath()), {});
         if (r.valid()) per_seed.push_back(r.value);
       }
       p.r_x = seedMean(per_seed);

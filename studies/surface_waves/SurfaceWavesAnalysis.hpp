@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "h5/File.hpp"
-#include "studies/statistics/Measurement.hpp"
 #include "studies/contract/Study.hpp"
+#include "studies/statistics/Measurement.hpp"
 #include "studies/surface_waves/SurfaceWavesStudy.hpp"
 
 namespace granwave {

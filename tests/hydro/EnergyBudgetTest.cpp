@@ -48,10 +48,10 @@ void expectRatesAreTheEnergysDerivative(const ConstitutiveModel& m) {
     cv.advanceTo(t);
     const std::vector<double>& U = cv.state();
     const GranularHydro1D::EnergyRates r = pde.energyRates(t, U.data());
-    const double balance = r.plate_work - r.collisional_loss - r.friction_loss - r.wall_loss -
-                           r.side_wall_loss;
-    const double scale = std::max({std::abs(r.plate_work), r.collisional_loss, r.wall_loss,
-                                   r.friction_loss, 1e-6});
+    const double balance =
+        r.plate_work - r.collisional_loss - r.friction_loss - r.wall_loss - r.side_wall_loss;
+    const double scale =
+        std::max({std::abs(r.plate_work), r.collisional_loss, r.wall_loss, r.friction_loss, 1e-6});
     EXPECT_NEAR(energyDerivative(pde, t, U) / scale, balance / scale, 1e-4) << "t = " << t;
     ++checked;
   }
