@@ -143,44 +143,18 @@ struct CvodeIntegrator::Impl {
   void check(int flag, const char* call) const {
     if (flag < 0) fail(call, flag);
   }
+
+  // The linear (BDF) or fixed-point (Adams) solver of o.method, with its Jacobian or
+  // preconditioner.
+  void attachSolver(const CvodeOptions& o);
 };
 
 namespace {
 extern "C" void silentErrorHandler(int, const char*, const char*, char*, void*) {}
 }  // namespace
 
-CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<double>& y0,
-                                 const CvodeOptions& o, ComponentName name)
-    : impl_(std::make_unique<Impl>()) {
-  Impl& m = *impl_;
-  m.f = std::move(f);
-  m.name = std::move(name);
-  m.n = static_cast<int>(y0.size());
-  m.t = t0;
-  if (m.n == 0) throw std::invalid_argument("CVODE needs a non-empty state");
-  if (!(o.rtol > 0) || o.atol.size() != y0.size())
-    throw std::invalid_argument(
-        "CVODE tolerances: rtol must be > 0 and atol must have one entry per component");
-  for (double a : o.atol)
-    if (!(a > 0)) throw std::invalid_argument("CVODE tolerances: every atol must be > 0");
-  m.check(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
-  m.y = N_VNew_Serial(m.n, m.ctx);
-  m.abstol = N_VNew_Serial(m.n, m.ctx);
-  if (!m.y || !m.abstol) m.fail("N_VNew_Serial", -20);
-  useCompiledKernels(m.y);  // CVODE's work vectors are clones of y: they inherit the kernels
-  useCompiledKernels(m.abstol);
-  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(m.y));
-  std::copy(o.atol.begin(), o.atol.end(), N_VGetArrayPointer(m.abstol));
-
-  m.cvode = CVodeCreate(o.method == CvodeMethod::Adams ? CV_ADAMS : CV_BDF, m.ctx);
-  if (!m.cvode) m.fail("CVodeCreate", -20);
-  CVodeSetErrHandlerFn(m.cvode, silentErrorHandler, nullptr);  // we report errors ourselves
-  m.check(CVodeInit(m.cvode, Impl::rhs, t0, m.y), "CVodeInit");
-  m.check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
-  m.check(CVodeSVtolerances(m.cvode, o.rtol, m.abstol), "CVodeSVtolerances");
-  m.check(CVodeSetMaxNumSteps(m.cvode, o.max_steps), "CVodeSetMaxNumSteps");
-  if (o.max_step > 0) m.check(CVodeSetMaxStep(m.cvode, o.max_step), "CVodeSetMaxStep");
-  if (o.max_order > 0) m.check(CVodeSetMaxOrd(m.cvode, o.max_order), "CVodeSetMaxOrd");
+void CvodeIntegrator::Impl::attachSolver(const CvodeOptions& o) {
+  Impl& m = *this;
   switch (o.method) {
     case CvodeMethod::BdfBanded:
       m.A = SUNBandMatrix(m.n, o.band_upper, o.band_lower, m.ctx);
@@ -220,6 +194,41 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
       m.check(CVodeSetNonlinearSolver(m.cvode, m.NLS), "CVodeSetNonlinearSolver");
       break;
   }
+}
+
+CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<double>& y0,
+                                 const CvodeOptions& o, ComponentName name)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& m = *impl_;
+  m.f = std::move(f);
+  m.name = std::move(name);
+  m.n = static_cast<int>(y0.size());
+  m.t = t0;
+  if (m.n == 0) throw std::invalid_argument("CVODE needs a non-empty state");
+  if (!(o.rtol > 0) || o.atol.size() != y0.size())
+    throw std::invalid_argument(
+        "CVODE tolerances: rtol must be > 0 and atol must have one entry per component");
+  for (double a : o.atol)
+    if (!(a > 0)) throw std::invalid_argument("CVODE tolerances: every atol must be > 0");
+  m.check(SUNContext_Create(nullptr, &m.ctx), "SUNContext_Create");
+  m.y = N_VNew_Serial(m.n, m.ctx);
+  m.abstol = N_VNew_Serial(m.n, m.ctx);
+  if (!m.y || !m.abstol) m.fail("N_VNew_Serial", -20);
+  useCompiledKernels(m.y);  // CVODE's work vectors are clones of y: they inherit the kernels
+  useCompiledKernels(m.abstol);
+  std::copy(y0.begin(), y0.end(), N_VGetArrayPointer(m.y));
+  std::copy(o.atol.begin(), o.atol.end(), N_VGetArrayPointer(m.abstol));
+
+  m.cvode = CVodeCreate(o.method == CvodeMethod::Adams ? CV_ADAMS : CV_BDF, m.ctx);
+  if (!m.cvode) m.fail("CVodeCreate", -20);
+  CVodeSetErrHandlerFn(m.cvode, silentErrorHandler, nullptr);  // we report errors ourselves
+  m.check(CVodeInit(m.cvode, Impl::rhs, t0, m.y), "CVodeInit");
+  m.check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
+  m.check(CVodeSVtolerances(m.cvode, o.rtol, m.abstol), "CVodeSVtolerances");
+  m.check(CVodeSetMaxNumSteps(m.cvode, o.max_steps), "CVodeSetMaxNumSteps");
+  if (o.max_step > 0) m.check(CVodeSetMaxStep(m.cvode, o.max_step), "CVodeSetMaxStep");
+  if (o.max_order > 0) m.check(CVodeSetMaxOrd(m.cvode, o.max_order), "CVodeSetMaxOrd");
+  m.attachSolver(o);
   if (o.method != CvodeMethod::Adams && o.stability_limit_detection)
     m.check(CVodeSetStabLimDet(m.cvode, SUNTRUE), "CVodeSetStabLimDet");
   if (!o.constraints.empty()) {

@@ -39,6 +39,23 @@ std::vector<int> columnsNear(int i, int Nx, bool periodic, int reach) {
   return near;
 }
 
+// Writes the derivatives of one coloured column entry (column `col`, block `b`, colour slot
+// `sl`) into the rows of the blocks b-2..b+2 of every column at `row_offsets`: the reach of
+// the operator's stencil. False on a derivative that is not finite.
+template <class Jets, class Writer>
+bool scatterColumnEntry(const Jets& dU, const std::vector<int>& row_offsets, int b, int N, int K,
+                        int sl, int col, const Writer& write) {
+  for (int offset : row_offsets)
+    for (int rb = std::max(0, b - 2); rb <= std::min(N, b + 2); ++rb)
+      for (int e = 0; e < (rb == N ? 2 : K); ++e) {
+        const int row = offset + rb * K + e;
+        const double d = dU[row].derivatives()[sl];
+        if (!std::isfinite(d)) return false;
+        if (d != 0) write(row, col, d);
+      }
+  return true;
+}
+
 }  // namespace
 
 template <int Colours>
@@ -49,7 +66,6 @@ int GranularHydro2D::jacobianWith(double t, const double* U, const SparseWriter&
   const std::vector<int> colour = columnColours(Nx, x_.periodic, kColumnReach);
   const int passes = *std::max_element(colour.begin(), colour.end()) + 1;
   auto slot = [&](int m) { return (m / K) % kBlockColours * K + m % K; };
-  auto blockEnd = [&](int b) { return b == N ? 2 : K; };
   for (int pass = 0; pass < passes; ++pass) {
     for (int k = 0; k < size(); ++k) j.U[k] = J(U[k], Eigen::Matrix<double, Colours, 1>::Zero());
     for (int i = 0; i < Nx; ++i)
@@ -59,19 +75,13 @@ int GranularHydro2D::jacobianWith(double t, const double* U, const SparseWriter&
     if (residual(t, j.U.data(), j.dU.data(), j.w) != 0) return 1;
     for (int i = 0; i < Nx; ++i) {
       if (colour[i] != pass) continue;
-      const std::vector<int> rows =
-          in_column_only ? std::vector<int>{i} : columnsNear(i, Nx, x_.periodic, kColumnReach);
-      for (int m = 0; m < n_col; ++m) {
-        const int col = columnOffset(i) + m, b = m / K, sl = slot(m);
-        for (int r : rows)
-          for (int rb = std::max(0, b - 2); rb <= std::min(N, b + 2); ++rb)
-            for (int e = 0; e < blockEnd(rb); ++e) {
-              const int row = columnOffset(r) + rb * K + e;
-              const double d = j.dU[row].derivatives()[sl];
-              if (!std::isfinite(d)) return 1;
-              if (d != 0) write(row, col, d);
-            }
-      }
+      std::vector<int> offsets;
+      for (int r :
+           in_column_only ? std::vector<int>{i} : columnsNear(i, Nx, x_.periodic, kColumnReach))
+        offsets.push_back(columnOffset(r));
+      for (int m = 0; m < n_col; ++m)
+        if (!scatterColumnEntry(j.dU, offsets, m / K, N, K, slot(m), columnOffset(i) + m, write))
+          return 1;
     }
   }
   return 0;
