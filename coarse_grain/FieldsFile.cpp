@@ -22,8 +22,8 @@ namespace L = fields_layout;
 using Shape = h5::Shape;
 
 void put(h5::File& f, const std::string& path, const std::vector<double>& v, const Shape& shape,
-         const char* unit) {
-  f.writeDataset(path, v, shape);
+         const char* unit, h5::Storage storage = h5::Storage::contiguous) {
+  f.writeDataset(path, v, shape, storage);
   f.writeStringAttribute(path, "unit", unit);
 }
 
@@ -193,14 +193,16 @@ void writePhaseProfiles(h5::File& f, const std::string& root, const PhaseProfile
   f.createGroup(root + L::kProfiles);
   for (const L::FieldColumn& c : L::kProfileFields)
     if (!(p.pooled.*c.values).empty())
-      put(f, root + L::kProfiles + "/" + c.name, p.pooled.*c.values, {P, Z}, c.unit);
+      put(f, root + L::kProfiles + "/" + c.name, p.pooled.*c.values, {P, Z}, c.unit,
+          h5::Storage::compressed);
   if (B > 0) {
     f.createGroup(root + L::kBlockProfiles);
     for (const L::FieldColumn& c : L::kProfileFields) {
       std::vector<double> stacked;
       for (const PhaseFields& b : p.blocks)
         stacked.insert(stacked.end(), (b.*c.values).begin(), (b.*c.values).end());
-      put(f, root + L::kBlockProfiles + "/" + c.name, stacked, {B, P, Z}, c.unit);
+      put(f, root + L::kBlockProfiles + "/" + c.name, stacked, {B, P, Z}, c.unit,
+          h5::Storage::compressed);
     }
   }
   const std::string phases = root + L::kPhases + "/";
@@ -219,10 +221,40 @@ void writePhaseProfiles(h5::File& f, const std::string& root, const PhaseProfile
   }
 }
 
-void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
+namespace {
+
+// The cells of every phase, and their [nz][1][nx] copies per phase for ParaView (/xdmf).
+void writeCells(h5::File& f, const FieldsAnalysis& a) {
+  const PhaseFields& p = a.pooled;
+  const std::size_t P = p.phases, Z = p.nz, X = p.nx;
+  f.createGroup(L::kFields);
+  for (const L::FieldColumn& c : L::kCellFields)
+    put(f, L::kFields + "/" + c.name, p.*c.values, {P, Z, X}, c.unit, h5::Storage::compressed);
+  for (std::size_t ph = 0; ph < P; ++ph) {
+    const std::string grp = fmt::format("{}/p{:04d}", L::kXdmf, ph);
+    f.createGroup(grp);
+    const int k = static_cast<int>(ph);
+    put(f, grp + "/area_fraction", slab(p, p.area_fraction, k), {Z, 1, X}, "1",
+        h5::Storage::compressed);
+    put(f, grp + "/temperature", slab(p, p.temperature, k), {Z, 1, X}, "J",
+        h5::Storage::compressed);
+    std::vector<double> v(Z * X * 3, 0.0);
+    const auto vx = slab(p, p.velocity_x, k), vz = slab(p, p.velocity_z, k);
+    // ParaView's axes: (z, y, x) order of the slab; vector components (x, y, z).
+    for (std::size_t c = 0; c < Z * X; ++c) {
+      v[3 * c] = vx[c];
+      v[3 * c + 2] = vz[c];
+    }
+    put(f, grp + "/velocity", v, {Z, 1, X, 3}, "m s-1", h5::Storage::compressed);
+  }
+}
+
+}  // namespace
+
+void writeFieldsFile(const std::string& path, const FieldsAnalysis& a, FieldsCells cells) {
   const PhaseFields& p = a.pooled;
   const FieldGrid& g = a.grid;
-  const std::size_t P = p.phases, Z = p.nz, X = p.nx;
+  const std::size_t Z = p.nz, X = p.nx;
   h5::AtomicFile af(path);
   h5::File& f = af.file();
 
@@ -232,35 +264,17 @@ void writeFieldsFile(const std::string& path, const FieldsAnalysis& a) {
   f.createGroup("/grid");
   put(f, L::kGridX, xs, {X}, "m");
   put(f, L::kGridZ, zs, {Z}, "m");
-
-  f.createGroup(L::kFields);
-  for (const L::FieldColumn& c : L::kCellFields)
-    put(f, L::kFields + "/" + c.name, p.*c.values, {P, Z, X}, c.unit);
-
+  const bool with_cells = cells == FieldsCells::written;
+  f.writeAttribute<std::int64_t>("/", L::kCellsAttribute, with_cells ? 1 : 0);
+  if (with_cells) writeCells(f, a);
   writePhaseProfiles(f, "", a.profiles());
   writeStates(f, a);
-
-  for (std::size_t ph = 0; ph < P; ++ph) {
-    const std::string grp = fmt::format("{}/p{:04d}", L::kXdmf, ph);
-    f.createGroup(grp);
-    const int k = static_cast<int>(ph);
-    put(f, grp + "/area_fraction", slab(p, p.area_fraction, k), {Z, 1, X}, "1");
-    put(f, grp + "/temperature", slab(p, p.temperature, k), {Z, 1, X}, "J");
-    std::vector<double> v(Z * X * 3, 0.0);
-    const auto vx = slab(p, p.velocity_x, k), vz = slab(p, p.velocity_z, k);
-    // ParaView's axes: (z, y, x) order of the slab; vector components (x, y, z).
-    for (std::size_t c = 0; c < Z * X; ++c) {
-      v[3 * c] = vx[c];
-      v[3 * c + 2] = vz[c];
-    }
-    put(f, grp + "/velocity", v, {Z, 1, X, 3}, "m s-1");
-  }
-
   writePatterns(f, a.patterns);
   writeSurfaceWaves(f, a.surface);
   writePeriodDoubling(f, a.context.period_doubling);
   writeParameters(f, a);
   af.commit();
+  if (!with_cells) return;
   // The pair or neither: a fields file without its sidecar is removed again.
   try {
     writeXdmf(xdmfSidecarPath(path), std::filesystem::path(path).filename().string(), a);

@@ -10,7 +10,13 @@
 
 namespace granwave {
 
-void writeFieldsFile(const std::string& path, const FieldsAnalysis& analysis);
+// The x-z cells (/fields, /xdmf and the XDMF sidecar) are for viewers: the studies read the
+// profiles, phases, fronts and states only, and leave the cells out of the runs they cache
+// (nine tenths of a fields file at 400 phases per cycle).
+enum class FieldsCells { written, left_out };
+
+void writeFieldsFile(const std::string& path, const FieldsAnalysis& analysis,
+                     FieldsCells cells = FieldsCells::written);
 // Path of the XDMF sidecar for a fields file (same name, .xdmf).
 std::string xdmfSidecarPath(const std::string& fields_path);
 

@@ -18,6 +18,8 @@
 //   /period_doubling/{f2_strength, noise_strength, threshold} [window], episodes [episode][3]
 //                                              (first cycle, cycles, period) and attributes
 //   /xdmf/pNNNN/{area_fraction, temperature [nz][1][nx], velocity [nz][1][nx][3]}
+//                                              (/fields and /xdmf only if the root attribute
+//                                              cells is 1; both compressed)
 //   /parameters                                attributes (kParameter*); scene (TOML text)
 //
 // <root> is "" for the whole run. Units as "unit" attributes. The hydro run file HYDRO.h5
@@ -47,6 +49,9 @@ inline const std::string kStates = "/states";
 inline const std::string kPatterns = "/patterns";
 inline const std::string kPeriodDoubling = "/period_doubling";
 inline const std::string kXdmf = "/xdmf";
+// Root attribute: 1 if the file holds the cells (/fields, /xdmf and the sidecar), 0 if they
+// were left out (FieldsCells::left_out, the studies' cached runs).
+inline const std::string kCellsAttribute = "cells";
 inline const std::string kParameters = "/parameters";
 inline const std::string kScene = "/parameters/scene";
 inline std::string stateRoot(int period) { return kStates + "/period" + std::to_string(period); }

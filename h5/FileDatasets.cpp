@@ -1,6 +1,7 @@
 // File: whole datasets (write once, read with shape checks, read rows) and the creation of
 // extendible ones.
 #include <cstdint>
+#include <vector>
 
 #include "h5/Dataspace.hpp"
 #include "h5/ErrorStack.hpp"
@@ -26,10 +27,29 @@ void requireNumeric(hid_t dataset, const std::string& file, const std::string& p
     throw H5Error(file + ": " + path + " is not numeric");
 }
 
+// Shuffled and deflated at level 1 (on the fields of a 30 s run, level 4 saved 2 % more:
+// 3.52 against 3.59 MB of 11.5), in chunks of one index of the first axis (one phase of a
+// [phase][z][x] field, what a reader of one phase reads) or, up to 64 Ki values, one chunk.
+void setDeflate(hid_t dcpl, const std::string& file) {
+  if (H5Pset_shuffle(dcpl) < 0 || H5Pset_deflate(dcpl, 1) < 0)
+    throw H5Error(file + ": cannot set up a compressed dataset");
+}
+
+void setCompressed(hid_t dcpl, const Shape& shape, const std::string& file) {
+  constexpr std::size_t kWholeChunk = 65536;
+  Shape chunk = shape;
+  if (elementCount(shape) > kWholeChunk) chunk.front() = 1;
+  std::vector<hsize_t> dims(chunk.begin(), chunk.end());
+  if (H5Pset_chunk(dcpl, static_cast<int>(dims.size()), dims.data()) < 0)
+    throw H5Error(file + ": cannot set up a compressed dataset");
+  setDeflate(dcpl, file);
+}
+
 }  // namespace
 
 template <Element T>
-void File::writeDataset(const std::string& path, const std::vector<T>& data, const Shape& shape) {
+void File::writeDataset(const std::string& path, const std::vector<T>& data, const Shape& shape,
+                        Storage storage) {
   if (data.size() != elementCount(shape)) {
     throw H5Error(name_ + ": " + path + ": " + std::to_string(data.size()) +
                   " values do not fill shape " + shapeString(shape));
@@ -38,6 +58,9 @@ void File::writeDataset(const std::string& path, const std::vector<T>& data, con
   Handle lcpl = intermediateGroupCreation();
   Handle dcpl = propertyListHandle(H5Pcreate(H5P_DATASET_CREATE));
   H5Pset_obj_track_times(dcpl.get(), false);  // same bytes for the same run
+  // A chunk cannot be empty: an empty or scalar dataset stays contiguous.
+  if (storage == Storage::compressed && !shape.empty() && elementCount(shape) > 0)
+    setCompressed(dcpl.get(), shape, name_);
   hid_t id = H5Dcreate2(file_.get(), path.c_str(), fileType<T>(), space.get(), lcpl.get(),
                         dcpl.get(), H5P_DEFAULT);
   Handle dataset = datasetHandle(check(id, name_, "cannot create dataset " + path));
@@ -63,7 +86,7 @@ void File::writeStringDataset(const std::string& path, const std::string& text) 
 
 template <Element T>
 ExtendibleDataset<T> File::createExtendible(const std::string& path, const Shape& row_shape,
-                                            std::size_t chunk_rows) {
+                                            std::size_t chunk_rows, Storage storage) {
   Shape shape{0}, max_shape{kAnyExtent}, chunk{chunk_rows < 1 ? 1 : chunk_rows};
   shape.insert(shape.end(), row_shape.begin(), row_shape.end());
   max_shape.insert(max_shape.end(), row_shape.begin(), row_shape.end());
@@ -75,6 +98,7 @@ ExtendibleDataset<T> File::createExtendible(const std::string& path, const Shape
   if (H5Pset_chunk(dcpl.get(), static_cast<int>(chunk_dims.size()), chunk_dims.data()) < 0) {
     fail("cannot set chunk " + shapeString(chunk) + " for " + path);
   }
+  if (storage == Storage::compressed) setDeflate(dcpl.get(), name_);
   Handle lcpl = intermediateGroupCreation();
   hid_t id = H5Dcreate2(file_.get(), path.c_str(), fileType<T>(), space.get(), lcpl.get(),
                         dcpl.get(), H5P_DEFAULT);
@@ -162,13 +186,14 @@ std::string File::readStringDataset(const std::string& path) const {
   return readStrings(type.get(), count, read, name_, path).front();
 }
 
-#define GRANWAVE_H5_DATASETS(T)                                                                 \
-  template void File::writeDataset<T>(const std::string&, const std::vector<T>&, const Shape&); \
-  template ExtendibleDataset<T> File::createExtendible<T>(const std::string&, const Shape&,     \
-                                                          std::size_t);                         \
-  template ExtendibleDataset<T> File::openExtendible<T>(const std::string&);                    \
-  template std::vector<T> File::readDataset<T>(const std::string&) const;                       \
-  template std::vector<T> File::readDataset<T>(const std::string&, const Shape&) const;         \
+#define GRANWAVE_H5_DATASETS(T)                                                                \
+  template void File::writeDataset<T>(const std::string&, const std::vector<T>&, const Shape&, \
+                                      Storage);                                                \
+  template ExtendibleDataset<T> File::createExtendible<T>(const std::string&, const Shape&,    \
+                                                          std::size_t, Storage);               \
+  template ExtendibleDataset<T> File::openExtendible<T>(const std::string&);                   \
+  template std::vector<T> File::readDataset<T>(const std::string&) const;                      \
+  template std::vector<T> File::readDataset<T>(const std::string&, const Shape&) const;        \
   template std::vector<T> File::readRows<T>(const std::string&, std::size_t, std::size_t) const;
 GRANWAVE_H5_DATASETS(double)
 GRANWAVE_H5_DATASETS(std::int64_t)

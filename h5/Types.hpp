@@ -44,6 +44,9 @@ hid_t fileType() {
 // Extents of a dataset, slowest-varying first (C order, as HDF5 and numpy store them).
 using Shape = std::vector<std::size_t>;
 
+// How a whole dataset is stored (File::writeDataset).
+enum class Storage { contiguous, compressed };
+
 // In an expected shape, matches any extent (e.g. the number of frames).
 inline constexpr std::size_t kAnyExtent = std::numeric_limits<std::size_t>::max();
 

@@ -39,11 +39,13 @@ struct Series {
 
 template <h5::Element V>
 Series<V> createSeries(h5::File& file, const std::string& group, const h5::Shape& row_shape,
-                       std::size_t value_chunk_rows, const std::string& unit) {
+                       std::size_t value_chunk_rows, const std::string& unit,
+                       h5::Storage storage = h5::Storage::contiguous) {
   file.createGroup(group);
-  Series<V> series{file.createExtendible<std::int64_t>(group + "/step", {}, 1024),
-                   file.createExtendible<double>(group + "/time", {}, 1024),
-                   file.createExtendible<V>(group + "/value", row_shape, value_chunk_rows)};
+  Series<V> series{
+      file.createExtendible<std::int64_t>(group + "/step", {}, 1024, storage),
+      file.createExtendible<double>(group + "/time", {}, 1024, storage),
+      file.createExtendible<V>(group + "/value", row_shape, value_chunk_rows, storage)};
   file.writeStringAttribute(group + "/time", "unit", "s");
   file.writeStringAttribute(group + "/value", "unit", unit);
   return series;
@@ -140,18 +142,23 @@ struct H5mdWriter::State {
   void closeAll();
 };
 
+// The observables, one row per record, compressed (h5::Storage): their steps and times are
+// regular and the counters slow, so a run file at 400 phases per cycle shrinks to about a
+// fifth (30 to 6.4 MB for 200 cycles of the paper's scene).
 void H5mdWriter::State::createObservables() {
+  constexpr h5::Storage kStorage = h5::Storage::compressed;
   file().createGroup(h5md::kObservables);
   for (const auto& observable : h5md::kRealObservables) {
     reals.push_back(createSeries<double>(file(), h5md::observableGroup(observable.name), {},
-                                         h5md::kObservableChunk, observable.unit));
+                                         h5md::kObservableChunk, observable.unit, kStorage));
   }
   for (const auto& observable : h5md::kCountObservables) {
     counts.push_back(createSeries<std::uint64_t>(file(), h5md::observableGroup(observable.name), {},
-                                                 h5md::kObservableChunk, "1"));
+                                                 h5md::kObservableChunk, "1", kStorage));
   }
-  collisions = createSeries<std::uint64_t>(
-      file(), h5md::kCollisions, {h5md::kCollisionColumns.size()}, h5md::kObservableChunk, "1");
+  collisions =
+      createSeries<std::uint64_t>(file(), h5md::kCollisions, {h5md::kCollisionColumns.size()},
+                                  h5md::kObservableChunk, "1", kStorage);
   std::vector<std::string> columns;
   for (const auto& column : h5md::kCollisionColumns) columns.emplace_back(column.name);
   file().writeStringArrayAttribute(h5md::kCollisions + "/value", "columns", columns);

@@ -76,7 +76,8 @@ void PairImpactHistogram::saveState(h5::File& file, const std::string& group) co
   file.createGroup(group);
   file.writeDataset(
       group + "/counts", counts_,
-      {static_cast<std::size_t>(bins_.phase_bins), static_cast<std::size_t>(bins_.speed_bins)});
+      {static_cast<std::size_t>(bins_.phase_bins), static_cast<std::size_t>(bins_.speed_bins)},
+      h5::Storage::compressed);  // mostly empty bins
   file.writeStringAttribute(group + "/counts", "unit", "1");
   PairImpactBins b = bins_;
   for (int i = 0; i < 6; ++i) file.writeAttribute(group, kRealBins[i], *realBin(b, i));

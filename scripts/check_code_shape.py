@@ -2,13 +2,16 @@
 """The size limits of the project's style (docs/ARCHITECTURE.md, "Shape of the code"):
 no source file over 450 lines, no function over 80 lines or nested more than 4 deep.
 
-Usage: check_code_shape.py BUILD_DIR [--report] [--only PREFIX ...] [--max-file 450]
+Usage: check_code_shape.py BUILD_DIR... [--report] [--only PREFIX ...] [--max-file 450]
                            [--max-function 80] [--max-nesting 4] [-j JOBS]
 
 Every C++ file of the repository (tests and benchmarks included) is counted for lines; the
 functions are found by parsing each translation unit of BUILD_DIR/compile_commands.json with
 libclang (Debian's python3-clang-14), so macros (TEST, TEST_F) and templates are seen as the
-compiler sees them. A function's length is the lines from its name to its closing brace;
+compiler sees them. With several build trees, a file is parsed with the command of the first
+tree that compiles it: .ci/run names the sanitizer build (clang 14, whose precompiled headers
+libclang 14 reads, so GoogleTest and CLI11 are not parsed again for every file) before the
+Release build (which also compiles the test tiers the sanitizer build leaves out). A function's length is the lines from its name to its closing brace;
 its nesting is the deepest chain of if / for / while / do / switch / try / lambda inside it
 (an `else if` continues its `if` and does not nest). Functions defined in headers are counted
 once. Exits 1 and lists the offenders if a limit is exceeded; --report lists the largest
@@ -55,7 +58,8 @@ def arguments(entry):
         if a in ("-o", "-c"):
             skip = a == "-o"
             continue
-        if a == entry["file"] or a.startswith("-fsanitize") or a.startswith("-W"):
+        # The sanitizer options stay: a precompiled header made with them is read only with them.
+        if a == entry["file"] or a.startswith("-W"):
             continue
         out.append(a)
     return out + ["-Wno-everything"]
@@ -120,9 +124,33 @@ def folder(path):
     return os.sep.join(parts[:depth]) if len(parts) > depth else os.sep.join(parts[:-1])
 
 
+def compile_entries(builds, selected):
+    """The compile command of each selected project file, from the first build tree that
+    compiles it; None (after saying why) if a tree has no database or names a missing file."""
+    entries, seen = [], set()
+    for build in builds:
+        db = os.path.join(build, "compile_commands.json")
+        if not os.path.exists(db):
+            print(f"check_code_shape: {db} not found (configure with CMake first)", file=sys.stderr)
+            return None
+        with open(db) as f:
+            mine = [e for e in json.load(f)
+                    if os.path.realpath(e["file"]).startswith(ROOT + os.sep)
+                    and selected(os.path.relpath(os.path.realpath(e["file"]), ROOT))]
+        stale = [e["file"] for e in mine if not os.path.exists(e["file"])]
+        if stale:
+            print(f"check_code_shape: {db} names {stale[0]}, which does not exist "
+                  f"({len(stale)} such files; reconfigure the build with CMake)", file=sys.stderr)
+            return None
+        new = [e for e in mine if os.path.realpath(e["file"]) not in seen]
+        seen.update(os.path.realpath(e["file"]) for e in new)
+        entries += new
+    return entries
+
+
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("build")
+    ap.add_argument("build", nargs="+")
     ap.add_argument("--report", action="store_true")
     ap.add_argument("--max-file", type=int, default=450)
     ap.add_argument("--max-function", type=int, default=80)
@@ -135,18 +163,8 @@ def main():
     def selected(rel):
         return not only or any(rel == p or rel.startswith(p + "/") for p in only)
 
-    db = os.path.join(a.build, "compile_commands.json")
-    if not os.path.exists(db):
-        print(f"check_code_shape: {db} not found (configure with CMake first)", file=sys.stderr)
-        return 2
-    with open(db) as f:
-        entries = [e for e in json.load(f)
-                   if os.path.realpath(e["file"]).startswith(ROOT + os.sep)
-                   and selected(os.path.relpath(os.path.realpath(e["file"]), ROOT))]
-    stale = [e["file"] for e in entries if not os.path.exists(e["file"])]
-    if stale:
-        print(f"check_code_shape: {db} names {stale[0]}, which does not exist "
-              f"({len(stale)} such files; reconfigure the build with CMake)", file=sys.stderr)
+    entries = compile_entries(a.build, selected)
+    if entries is None:
         return 2
     functions = {}
     with ProcessPoolExecutor(max_workers=a.j) as pool:

@@ -4,7 +4,7 @@
 #   setup.sh            the program, the tests and the benchmarks, with what they need
 #   setup.sh --program  only the program (`granwave`) and what building and running it needs
 #   GRANWAVE_BUILD_DIR  build tree (default: build)
-#   GRANWAVE_SANITIZE   1 = address + undefined-behaviour sanitizer build
+#   GRANWAVE_SANITIZE   1 = address + undefined-behaviour sanitizer build (with clang 14)
 #   GRANWAVE_BUILD_BENCH 0 = do not build the benchmark programs (default 1)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -21,7 +21,7 @@ packages=(build-essential cmake pkg-config git
 # headless Chromium for the reports, h5ls, the field's readers that open granwave's files
 # (docs/commands.md, "Viewers") and YAML for the citation file's check.
 test_packages=(libgtest-dev libgmock-dev libbenchmark-dev hdf5-tools chromium
-               clang-format python3-clang-14
+               clang-format python3-clang-14 clang-14 libclang-rt-14-dev
                paraview python3-paraview python3-mdanalysis python3-ase python3-gsd python3-yaml)
 ((program_only)) || packages+=("${test_packages[@]}")
 missing=()
@@ -47,6 +47,16 @@ if ((program_only)); then
 else
   options+=(-DGRANWAVE_BUILD_TESTS=ON
             -DGRANWAVE_BUILD_BENCH="$([ "$sanitize" = 1 ] || [ "${GRANWAVE_BUILD_BENCH:-1}" = 0 ] && echo OFF || echo ON)")
+fi
+if [ "$sanitize" = 1 ]; then
+  # The sanitizer build uses clang 14: it compiles the instrumented code in about a third of
+  # GCC's time on the heaviest files (docs/performance.md, "CI"), and is a second compiler's
+  # warnings. A tree configured with another compiler is configured afresh.
+  if [ -f "$build/CMakeCache.txt" ] &&
+     ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang++-14$' "$build/CMakeCache.txt"; then
+    rm -rf "$build/CMakeCache.txt" "$build/CMakeFiles"
+  fi
+  options+=(-DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14)
 fi
 cmake -S . -B "$build" "${options[@]}" >&2
 if ((program_only)); then

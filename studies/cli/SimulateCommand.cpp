@@ -19,9 +19,10 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
       ->allow_extra_args(false);
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress line on stderr");
   cmd->add_flag("--no-output", opt.no_output, "Do not write a run file (summary only)");
-  cmd->add_option("--fields", opt.fields,
-                  "Also write phase-averaged fields, computed live (HDF5 + .xdmf; default: "
-                  "none)");
+  CLI::Option* fields =
+      cmd->add_option("--fields", opt.fields,
+                      "Also write phase-averaged fields, computed live (HDF5 + .xdmf; default: "
+                      "none)");
   cmd->add_option("--fields-period", opt.fields_period, "Cycles per phase window for --fields")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
@@ -31,6 +32,11 @@ void addSimulateCommand(CLI::App& app, SimulateOptions& opt) {
   cmd->add_flag("--state-fields", opt.state_fields,
                 "With --fields: also average the fields over the period-1 and the period-2 "
                 "windows of the layer separately (/states; about twice the memory)");
+  cmd->add_flag("--fields-without-cells{false}", opt.fields_cells,
+                "With --fields: leave out the x-z cells and their XDMF sidecar, keeping the "
+                "profiles, phases, fronts and states (what the studies read; a tenth of the "
+                "size; default: cells written)")
+      ->needs(fields);
   cmd->add_option("--checkpoint-every", opt.checkpoint_every,
                   "Save a checkpoint every this many seconds of wall time (and on Ctrl-C); "
                   "the same command then continues a killed run from it (default: none)")

@@ -28,9 +28,9 @@ namespace {
 // the same build (another build need not give the same bits).
 std::string runIdentity(const Scene& scene, const ParticleRunOptions& opt) {
   return fmt::format(
-      "{}\nrun_file={} fields={} fields_period={} fields_blocks={} state_fields={}\nbuild={}\n",
+      "{}\nrun_file={} fields={} fields_period={} fields_blocks={} state_fields={}{}\nbuild={}\n",
       sceneToToml(scene), !opt.no_output, !opt.fields.empty(), opt.fields_period, opt.fields_blocks,
-      opt.state_fields, buildIdentity());
+      opt.state_fields, opt.fields_cells ? "" : " cells=0", buildIdentity());
 }
 
 double processCpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
@@ -270,14 +270,18 @@ int ParticleRun::writeOutputs(const RunStatus& status) {
   if (writer_) fmt::print("output          {}\n", out_);
   if (fields) {
     try {
-      writeFieldsFile(opt_.fields, *fields);
+      writeFieldsFile(opt_.fields, *fields,
+                      opt_.fields_cells ? FieldsCells::written : FieldsCells::left_out);
     } catch (...) {
       std::error_code ec;
       if (writer_) std::filesystem::remove(out_, ec);
       throw;
     }
     fmt::print("{}", formatFieldsSummary(*fields));
-    fmt::print("fields output   {} (+ {})\n", opt_.fields, xdmfSidecarPath(opt_.fields));
+    if (opt_.fields_cells)
+      fmt::print("fields output   {} (+ {})\n", opt_.fields, xdmfSidecarPath(opt_.fields));
+    else
+      fmt::print("fields output   {} (profiles; cells left out)\n", opt_.fields);
   }
   return kExitSuccess;
 }

@@ -34,6 +34,7 @@ struct ParticleRunOptions {
   int fields_period = 2;   // cycles per phase window
   int fields_blocks = 5;
   bool state_fields = false;    // also average the fields per layer state (/states)
+  bool fields_cells = true;     // the x-z cells and their sidecar (false: profiles etc. only)
   double checkpoint_every = 0;  // s of wall time between checkpoints; 0 = none
 };
 

@@ -39,9 +39,10 @@ std::vector<std::string> childArguments(const RunRecord& r, double checkpoint_ev
   }
   std::vector<std::string> a{"simulate", r.scenePath(), "-o", r.runPath(), "-q"};
   if (q.fields)
-    a.insert(a.end(),
-             {"--fields", r.fieldsPath(), "--fields-period", std::to_string(q.window_cycles),
-              "--fields-blocks", std::to_string(q.blocks)});
+    a.insert(a.end(), {"--fields", r.fieldsPath(), "--fields-period",
+                       std::to_string(q.window_cycles), "--fields-blocks", std::to_string(q.blocks),
+                       // The studies read profiles, phases, fronts and states; not the x-z cells.
+                       "--fields-without-cells"});
   if (q.fields && q.state_fields) a.push_back("--state-fields");
   if (checkpoint_every > 0)
     a.insert(a.end(), {"--checkpoint-every", fmt::format("{}", checkpoint_every)});

@@ -75,8 +75,8 @@ TEST_F(HydroCli, CoarseSubsetOfTheParameterMapRunsWithoutNumericalFailure) {
       "--set particles.count=600 --set hydro.cells=100",
       "--set contact.stokes_critical=80 --set contact.e_inf=0.8 --set hydro.cells=60",
       "--set hydro.transport=\"garzo-dufty\" --set hydro.cells=60",
-      "--set hydro.particles=\"rough\" --set drive.frequency=15 --set drive.gamma=6 "
-      "--set hydro.cells=60 --set run.duration=2.67",
+      ("--set hydro.particles=\"rough\" --set drive.frequency=15 --set drive.gamma=6 "
+       "--set hydro.cells=60 --set run.duration=2.67"),
       "--set hydro.rtol=1e-3 --set hydro.cells=200",
   };
   for (const char* args : cases) {

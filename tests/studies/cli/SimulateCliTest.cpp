@@ -5,12 +5,16 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
+#include "h5/File.hpp"
 #include "particles/H5mdReader.hpp"
 
 namespace fs = std::filesystem;
@@ -98,6 +102,38 @@ TEST_F(SimulateCli, RunTooShortForThePeriodTwoSeriesStillSucceeds) {
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("centre of mass"), std::string::npos);
   EXPECT_EQ(r.out.find("period-2 state"), std::string::npos);
+}
+
+// --fields-without-cells (what the studies pass for the runs they cache): the same profiles,
+// phases and fronts as with the cells, bit for bit, but no /fields, no /xdmf and no sidecar;
+// the root attribute `cells` says which. Without --fields the option is refused.
+TEST_F(SimulateCli, FieldsWithoutCellsKeepTheProfilesAndLeaveOutTheCells) {
+  const std::string scene =
+      write("dry.toml", "[contact]\nrestitution = \"dry\"\n[run]\nduration = 2\n");
+  ASSERT_EQ(run("simulate -q " + scene + " --no-output --fields with.h5").code, 0);
+  const Result r = run("simulate -q " + scene +
+                       " --no-output --fields without.h5 "
+                       "--fields-without-cells");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const granwave::h5::File with((dir_ / "with.h5").string());
+  const granwave::h5::File without((dir_ / "without.h5").string());
+  EXPECT_EQ(with.readAttribute<std::int64_t>("/", "cells"), 1);
+  EXPECT_EQ(without.readAttribute<std::int64_t>("/", "cells"), 0);
+  EXPECT_TRUE(with.isDataset("/fields/area_fraction"));
+  EXPECT_FALSE(without.isGroup("/fields"));
+  EXPECT_FALSE(without.isGroup("/xdmf"));
+  EXPECT_TRUE(fs::exists(dir_ / "with.xdmf"));
+  EXPECT_FALSE(fs::exists(dir_ / "without.xdmf"));
+  for (const char* path : {"/profiles/temperature", "/profiles/area_fraction",
+                           "/phases/center_of_mass_height", "/blocks/profiles/temperature"}) {
+    const std::vector<double> a = with.readDataset<double>(path);
+    const std::vector<double> b = without.readDataset<double>(path);
+    ASSERT_EQ(a.size(), b.size()) << path;
+    EXPECT_EQ(0, std::memcmp(a.data(), b.data(), a.size() * sizeof(double))) << path;
+  }
+  const Result alone = run("simulate -q " + scene + " --no-output --fields-without-cells");
+  EXPECT_EQ(alone.code, 2);
+  EXPECT_NE(alone.err.find("--fields"), std::string::npos) << alone.err;
 }
 
 TEST_F(SimulateCli, SameSceneAndSeedGiveIdenticalFiles) {
