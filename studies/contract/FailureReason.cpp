@@ -33,7 +33,12 @@ std::string shortReason(const std::string& message) {
   }
   const double t = collapseTime(message);
   if (std::isfinite(t)) return fmt::format("collapse at t = {:.3f} s", t);
-  return message.substr(0, 60);
+  // Else its first clause, cut between words (never inside one) and marked when cut.
+  std::string clause = message.substr(0, message.find(" ("));
+  constexpr std::size_t kLongest = 80;
+  if (clause.size() <= kLongest) return clause;
+  const auto space = clause.rfind(' ', kLongest);
+  return clause.substr(0, space == std::string::npos ? kLongest : space) + " …";
 }
 
 }  // namespace granwave

@@ -1,6 +1,7 @@
 #pragma once
 // A failed run's one-line reason, shortened for a table cell: the CVODE flag of a hydro
-// failure (CV_CONSTR_FAIL, ...), the time of an inelastic collapse, else the message's start.
+// failure (CV_CONSTR_FAIL, ...), the time of an inelastic collapse, else the message's first
+// clause (up to " ("), cut between words after 80 characters.
 #include <string>
 
 namespace granwave {

@@ -12,15 +12,17 @@ namespace granwave {
 
 namespace {
 
+const char* const kNoPeakFront = "none: no T~g peak above 0.5 T0 rose from an impact";
+
 Table costTable(const CostAccuracy& cost) {
   Table t;
   t.title = "Runs of the cost-accuracy chart";
   t.columns = {"method", "setting", "CPU s", "front speed (m/s)", "error (m/s)"};
   for (const CostRow& r : cost.rows) {
     if (r.particles) {
-      t.rows.push_back({"particles",
-                        fmt::format("{:g} s ({} cycles pooled)", r.duration, r.pooled_cycles),
-                        formatNumber(r.cpu), format(r.speed), formatNumber(r.error, 3)});
+      t.rows.push_back(
+          {"particles", fmt::format("{:g} s ({} cycles pooled)", r.duration, r.pooled_cycles),
+           formatNumber(r.cpu), formatOr(r.speed, kNoPeakFront), formatNumber(r.error, 3)});
       continue;
     }
     const std::string setting = fmt::format("{} cells, rtol {:g}", r.cells, r.rtol);
@@ -29,7 +31,8 @@ Table costTable(const CostAccuracy& cost) {
           {"hydro", setting, formatNumber(r.cpu), "failed: " + shortReason(r.failure), "–"});
     else
       t.rows.push_back({"hydro", setting + (r.reference ? " (reference)" : ""), formatNumber(r.cpu),
-                        format(r.speed), r.reference ? "reference" : formatNumber(r.error, 3)});
+                        formatOr(r.speed, kNoPeakFront),
+                        r.reference ? "reference" : formatNumber(r.error, 3)});
   }
   return t;
 }
@@ -119,37 +122,60 @@ std::string hydroPeriod(const ModelHierarchy& m, const std::string& key) {
   return "not run";
 }
 
-// Does the continuum double where the particles do, smooth disks against rough particles
-// (the question matters because the particles' friction carries about half their dissipation)?
-// "simplest model that reproduces it: X (decided at 5 seeds; the same verdict in 97 % of 200
-// bootstrap resamples)", or undecided with the verdicts the resamples gave.
-std::string verdictText(const VerdictStability& v) {
-  std::string alternatives;
+// Every verdict the bootstrap resamples gave, with its share: "'none' 58 %, 'X' 42 %".
+std::string resampleShares(const VerdictStability& v) {
+  std::string out;
   for (const auto& [verdict, share] : v.shares)
-    alternatives +=
-        fmt::format("{}'{}' {}", alternatives.empty() ? "" : ", ", verdict,
-                    share < 0.01 ? std::string("< 1 %") : fmt::format("{:.0f} %", 100 * share));
+    out += fmt::format("{}'{}' {}", out.empty() ? "" : ", ", verdict,
+                       share < 0.01 ? std::string("< 1 %") : fmt::format("{:.0f} %", 100 * share));
+  return out;
+}
+
+std::string seedCount(int n) { return n == 1 ? "1 seed" : fmt::format("{} seeds", n); }
+
+// How often resamples of the seeds repeat the verdict, in plain words.
+std::string agreementText(const VerdictStability& v) {
+  if (v.seeds < 2)
+    return "With one seed the bootstrap cannot test it (every resample is that seed)";
+  std::string s = fmt::format(
+      "The same verdict in {:.0f} % of {} bootstrap resamples of the "
+      "seeds",
+      100 * v.agreement, v.resamples);
+  if (v.agreement < 1) s += fmt::format(" (all they give: {})", resampleShares(v));
+  return s;
+}
+
+// A verdict in plain words (docs/studies.md, "Verdict stability"): what it is, what decided
+// it or why nothing could, and how often resamples of the seeds repeat it. `names`: list the
+// open candidates by name (the section) or count them (the headline).
+std::string verdictText(const VerdictStability& v, bool names) {
   if (!v.decided)
     return fmt::format(
-        "undecided at {} seeds: the interval of a simpler candidate still crosses a "
-        "tolerance's edge (bootstrap resamples of the seeds: {})",
-        v.seeds, alternatives);
-  std::string said = v.verdict == "none" ? "no simpler model reproduces the particles"
-                                         : "simplest model that reproduces it: " + v.verdict;
-  std::string when = fmt::format("decided at {} seeds", v.seeds);
-  if (!v.open.empty()) {
-    said = v.verdict == "none" ? "no simpler model is shown to reproduce the particles"
-                               : "simplest model shown to reproduce it: " + v.verdict;
-    std::string names;
-    for (const std::string& o : v.open) names += (names.empty() ? "" : "; ") + o;
-    when = fmt::format(
-        "at the cap of {} seeds, where the interval of {} still crosses a tolerance's edge: not "
-        "shown to reproduce, not shown to differ",
-        v.seeds, names);
-  }
+        "undecided at {}: a simpler candidate is not yet settled (an interval of its "
+        "differences from the full model still crosses a tolerance's edge); bootstrap "
+        "resamples of the seeds give {}",
+        seedCount(v.seeds), resampleShares(v));
+  const bool none = v.verdict == "none";
+  if (v.open.empty())
+    return fmt::format(
+        "{}. Decided: with all {} every simpler candidate is settled (the 95 % intervals "
+        "of its differences from the full model, front speed and time in period 2, lie wholly "
+        "within the tolerances, or one lies wholly outside). {}",
+        none ? "none of the simpler models reproduces the particles"
+             : v.verdict + " is the simplest model that reproduces the particles",
+        seedCount(v.seeds), agreementText(v) + ".");
+  std::string open;
+  for (const std::string& o : v.open) open += (open.empty() ? "" : "; ") + o;
+  const std::size_t k = v.open.size();
   return fmt::format(
-      "{} ({}; the same verdict in {:.0f} % of {} bootstrap resamples of the seeds: {})", said,
-      when, 100 * v.agreement, v.resamples, alternatives);
+      "{}. Not decided by the data: at the cap of {} {} still not settled (an interval "
+      "crosses a tolerance's edge: not shown to reproduce, not shown to differ) and passed "
+      "over{}. {}",
+      none ? "none of the simpler models is shown to reproduce the particles"
+           : v.verdict + " is the simplest model shown to reproduce the particles",
+      seedCount(v.seeds),
+      k == 1 ? std::string("1 candidate is") : fmt::format("{} candidates are", k),
+      names ? ": " + open : std::string(""), agreementText(v) + ".");
 }
 
 std::string doublingVerdict(const ModelHierarchy (&models)[2]) {
@@ -227,8 +253,8 @@ void failureSection(const MethodComparisonConfig& c, const FailureMap& m, Report
   s.add(hydroFailureMap(c, m));
 }
 
-std::string modelSection(const MethodComparisonConfig& config, const ModelHierarchy (&models)[2],
-                         Report& report) {
+std::vector<std::string> modelSection(const MethodComparisonConfig& config,
+                                      const ModelHierarchy (&models)[2], Report& report) {
   ReportSection& s = report.section(
       "The simplest model that reproduces the particles",
       fmt::format(
@@ -259,19 +285,24 @@ std::string modelSection(const MethodComparisonConfig& config, const ModelHierar
                       100 * config.front_tolerance, config.share_tolerance)));
   Table t;
   t.title = "Model hierarchy against the full particle model";
+  t.caption =
+      "Δ/σ: the front-speed difference from the reference in combined sigmas ('–' where "
+      "either front speed is missing).";
   t.columns = {"layer",
                "model",
                "front speed, velocity jump (m/s)",
-               "Δ / σ",
+               "Δ/σ",
                "period (T)",
                "time in period 2 (95 %)",
                "share − reference's (95 %)",
                "reproduces"};
+  std::vector<std::string> headline;
   std::string verdicts;
   for (int law = 0; law < kLaws; ++law) {
     const std::string name = kLawNames[law];
     const ModelHierarchy& m = models[law];
-    t.rows.push_back({name, "particles, full model (reference)", format(m.reference), "0",
+    t.rows.push_back({name, "particles, full model (reference)",
+                      formatOr(m.reference, "none: no seed gave a velocity-jump front"), "0",
                       m.reference_periods + " (mode " + std::to_string(m.reference_period) + ")",
                       shareText(m.reference_share), "–", "–"});
     for (const ModelCandidate& c : m.candidates) {
@@ -279,16 +310,19 @@ std::string modelSection(const MethodComparisonConfig& config, const ModelHierar
         t.rows.push_back({name, c.description, c.failure, "–", "–", "–", "–", "no (fails)"});
         continue;
       }
-      t.rows.push_back({name, c.description, format(c.speed), formatNumber(c.sigma, 1),
-                        c.periods.empty() ? "–" : c.periods, shareText(c.share),
-                        gapText(c.share_gap), matchText(c.match)});
+      t.rows.push_back({name, c.description,
+                        formatOr(c.speed, "none: no velocity-jump front resolved"),
+                        formatNumber(c.sigma, 1), c.periods.empty() ? "–" : c.periods,
+                        shareText(c.share), gapText(c.share_gap), matchText(c.match)});
     }
-    verdicts += fmt::format("{} layer: {}. ", name, verdictText(m.stability));
+    const std::string law_name = name == "dry" ? "Dry layer" : "Wet layer";
+    verdicts += fmt::format("- {}: {}\n", law_name, verdictText(m.stability, true));
+    headline.push_back(fmt::format("{}: {}", law_name, verdictText(m.stability, false)));
   }
   s.add(std::move(t));
   s.addText(verdicts);
   s.addText(doublingVerdict(models));
-  return verdicts;
+  return headline;
 }
 
 void lammpsSection(const MethodComparisonConfig& c, const LammpsComparison& l,

@@ -4,6 +4,7 @@
 // the particles, soft-sphere DEM (LAMMPS). Figures, tables and prose only.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "studies/method_comparison/MethodComparison.hpp"
 #include "studies/report/Report.hpp"
@@ -13,9 +14,10 @@ namespace granwave {
 void costSection(const MethodComparisonConfig& config, const CostAccuracy& cost, Report& report);
 void failureSection(const MethodComparisonConfig& config, const FailureMap& failures,
                     Report& report);
-// Returns the verdicts of both laws in a sentence each, for the study's summary.
-std::string modelSection(const MethodComparisonConfig& config, const ModelHierarchy (&models)[2],
-                         Report& report);
+// Returns the verdicts of both laws, one line each (with what decided them and how often
+// resamples of the seeds repeat them), for the study's headline.
+std::vector<std::string> modelSection(const MethodComparisonConfig& config,
+                                      const ModelHierarchy (&models)[2], Report& report);
 // `dry_seed1` and `dry_hydro`: the dry layer's particle run of the first seed and its hydro run
 // with the velocity-dependent closure, drawn beside LAMMPS.
 void lammpsSection(const MethodComparisonConfig& config, const LammpsComparison& lammps,

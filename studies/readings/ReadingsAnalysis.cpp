@@ -247,8 +247,8 @@ void judge(const ReadingsConfig& c, ReadingOutcome& o) {
   o.verdict[kWeakFront] = agrees(o.weak_front, 1.61, 0.25);
   o.verdict[kStrongFront] = agrees(o.strong_front, 1.95, 0.25);
   o.verdict[kMomentumRatio] = agrees(o.momentum_ratio, 2.17, 0.56);
-  o.measured[kWeakFront] = format(o.weak_front, 2) + " m/s";
-  o.measured[kStrongFront] = format(o.strong_front, 2) + " m/s";
+  o.measured[kWeakFront] = format(o.weak_front, 2, "m/s");
+  o.measured[kStrongFront] = format(o.strong_front, 2, "m/s");
   o.measured[kMomentumRatio] = format(o.momentum_ratio, 2);
 }
 

@@ -15,7 +15,8 @@ struct Series {
   std::vector<double> x, y, xerr, yerr;
   std::vector<double> y_low, y_high;  // band
   std::string color, linestyle, marker;
-  double linewidth = 0;  // 0: matplotlib's default
+  double linewidth = 0;   // 0: matplotlib's default
+  double markersize = 0;  // points; 0: matplotlib's default
 };
 
 struct Image {
@@ -36,8 +37,24 @@ struct Figure {
   std::vector<Series> series;
   std::vector<Image> image;  // zero or one
   bool legend = true;
-  bool legend_outside = false;  // beside the axes, for plots whose points fill them (diagrams)
+  bool legend_outside = false;     // beside the axes, for plots whose points fill them (diagrams)
+  std::vector<double> xlim, ylim;  // {low, high} of an axis; empty: fitted to the data
 };
+
+// The points of a figure that lie outside the range its height axis shows (limitYAxis).
+struct OutsideAxis {
+  int below = 0, above = 0;
+  double lowest = 0, highest = 0;  // the extreme values among them
+  std::string text;                // the caption's sentence about them ("" when none)
+};
+
+// Shows y in [low, high] only (plus a margin of 3 %) and moves every point of a "points"
+// series that lies outside onto the nearest edge, as a series of its own in the same colour
+// marked by an arrow up or down: a few far points cannot squeeze the rest into a corner, and none
+// is dropped unseen. The sentence it returns (also appended to the caption) says how many lie
+// outside, of which series and how far; `what` names the range ("the box"), `unit` its unit.
+OutsideAxis limitYAxis(Figure& fig, double low, double high, const std::string& what,
+                       const std::string& unit);
 
 struct Table {
   std::string title, caption;

@@ -20,6 +20,8 @@ void writeFigure(h5::File& f, const std::string& g, const Figure& fig) {
   f.writeStringAttribute(g, "yscale", fig.yscale);
   f.writeAttribute<std::int64_t>(g, "legend", fig.legend ? 1 : 0);
   if (fig.legend_outside) f.writeAttribute<std::int64_t>(g, "legend_outside", 1);
+  if (fig.xlim.size() == 2) f.writeArrayAttribute<double>(g, "xlim", fig.xlim);
+  if (fig.ylim.size() == 2) f.writeArrayAttribute<double>(g, "ylim", fig.ylim);
   f.createGroup(g + "/series");
   for (std::size_t k = 0; k < fig.series.size(); ++k) {
     const Series& s = fig.series[k];
@@ -31,6 +33,7 @@ void writeFigure(h5::File& f, const std::string& g, const Figure& fig) {
     if (!s.linestyle.empty()) f.writeStringAttribute(sg, "linestyle", s.linestyle);
     if (!s.marker.empty()) f.writeStringAttribute(sg, "marker", s.marker);
     if (s.linewidth > 0) f.writeAttribute<double>(sg, "linewidth", s.linewidth);
+    if (s.markersize > 0) f.writeAttribute<double>(sg, "markersize", s.markersize);
     putVector(f, sg + "/x", s.x);
     putVector(f, sg + "/y", s.y);
     putVector(f, sg + "/xerr", s.xerr);

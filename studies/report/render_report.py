@@ -28,11 +28,12 @@ NUMERIC = re.compile(r"\s*[-+\u2212]?(\d+\.?\d*|\.\d+)([eE][-+\u2212]?\d+)?(\s*(
                      re.IGNORECASE)
 CSS = """body{font-family:system-ui,"Segoe UI",Roboto,"DejaVu Sans",sans-serif;max-width:1000px;
 margin:2em auto;padding:0 1em;line-height:1.5;color:#222}h2{border-bottom:1px solid #ccc}
-.provenance{color:#666;font-size:.85em}table{border-collapse:collapse;margin:1em 0;max-width:100%}
-caption{text-align:left;padding:.3em 0}th,td{border:1px solid #bbb;padding:.25em .6em;
-overflow-wrap:anywhere}th{background:#eee}
-td.num{text-align:right;font-variant-numeric:tabular-nums}figure{margin:1.5em 0}figure img{
-max-width:100%}figcaption{font-size:.92em;color:#333}"""
+.provenance{color:#666;font-size:.85em}ul.answers li{margin:.3em 0}
+.table-title{margin:1em 0 .3em}.table-wrap{overflow-x:auto;max-width:100%;margin:0 0 1em}
+table{border-collapse:collapse}th,td{border:1px solid #bbb;padding:.25em .6em;
+overflow-wrap:normal;word-break:normal;hyphens:manual;vertical-align:top}th{background:#eee}
+td.num{text-align:right;white-space:nowrap;font-variant-numeric:tabular-nums}.nw{white-space:nowrap}
+figure{margin:1.5em 0}figure img{max-width:100%}figcaption{font-size:.92em;color:#333}"""
 JS = """window.addEventListener("load", function () {
   var imgs = document.getElementsByTagName("img"), loaded = 0;
   for (var i = 0; i < imgs.length; i++) if (imgs[i].complete && imgs[i].naturalWidth > 0) loaded++;
@@ -110,10 +111,34 @@ def children(group, name):
     return [parent[k] for k in keys if isinstance(parent[k], h5py.Group)]
 
 
+def text_html(text):
+    """Escaped text that breaks only between words: a value and its error ("1.5 ± 0.2",
+    "< 2.1") stay together, and every word holding a digit or a symbol ("9.06", "0.49–0.66",
+    "T~g/T0") is kept whole; words of letters may still break at their own hyphens."""
+    text = re.sub(r"\s*±\s*", "\u00a0±\u00a0", text)
+    text = re.sub(r"(\d)\s+%", "\\1\u00a0%", text)  # a number keeps its per cent sign
+    text = re.sub(r"(^|\s)([<>≤≥])\s+", "\\1\\2\u00a0", text)
+    words = []
+    for word in re.split(r"( +)", text):
+        escaped = html.escape(word)
+        whole = word.strip() and not re.fullmatch(r"[A-Za-z\u00c0-\u024f'-]+[,;:.]?", word)
+        words.append(f'<span class="nw">{escaped}</span>' if whole else escaped)
+    return "".join(words)
+
+
 def paragraphs(text):
-    """HTML paragraphs of a text whose paragraphs are separated by blank lines."""
+    """HTML of a text whose paragraphs are separated by blank lines; a paragraph whose every
+    line starts with "- " is a list, one item per line (a report's answers, one per line)."""
     parts = [p.strip() for p in re.split(r"\n\s*\n", text) if p.strip()]
-    return "".join(f"<p>{html.escape(p)}</p>\n" for p in parts)
+    out = []
+    for part in parts:
+        lines = [ln.strip() for ln in part.splitlines() if ln.strip()]
+        if all(ln.startswith("- ") for ln in lines):
+            items = "".join(f"<li>{text_html(ln[2:].strip())}</li>\n" for ln in lines)
+            out.append(f'<ul class="answers">\n{items}</ul>\n')
+        else:
+            out.append(f"<p>{text_html(' '.join(lines))}</p>\n")
+    return "".join(out)
 
 
 def bold_title(title):
@@ -126,13 +151,14 @@ def draw_series(ax, s):
     style = as_str(attr(s, "style"))
     kw = {"label": as_str(attr(s, "label", "")) or None}
     kw.update({k: as_str(attr(s, k)) for k in ("color", "linestyle", "marker") if k in s.attrs})
-    kw.update({k: get_float(s, k) for k in ("linewidth", "alpha") if k in s.attrs})
+    kw.update({k: get_float(s, k) for k in ("linewidth", "markersize", "alpha") if k in s.attrs})
     data = [s.get(k) for k in ("x", "y", "y_low", "y_high")]
     if not any(isinstance(d, h5py.Dataset) and d.size for d in data):
         return  # no data at all (the C++ writer omits empty vectors): nothing to draw
     x = get_data(s, "x", required=style != "hline")
     if style == "band":
         kw.pop("marker", None)
+        kw.pop("markersize", None)
         ax.fill_between(x, get_data(s, "y_low", len(x)), get_data(s, "y_high", len(x)),
                         **{"alpha": 0.3, **kw})
         return
@@ -157,6 +183,7 @@ def draw_series(ax, s):
         ax.errorbar(x, y, yerr=yerr, xerr=xerr, capsize=3, **marked)
     elif style == "bar":
         kw.pop("marker", None)
+        kw.pop("markersize", None)
         steps = np.diff(np.unique(x[np.isfinite(x)]))
         ax.bar(x, y, width=0.8 * (steps.min() if len(steps) else 1.0), yerr=yerr, capsize=3, **kw)
     else:
@@ -244,10 +271,24 @@ def place_legend(fig, ax, outside):
         legend.remove()
     if ax.images:  # the colour bar is on the right: the legend goes under the axis label
         entries = len(ax.get_legend_handles_labels()[0])
+        rows = -(-entries // 4)  # at most 4 columns, the rows filled evenly
         ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.2), borderaxespad=0.0,
-                  ncol=min(entries, 4))
+                  ncol=-(-entries // rows))
     else:
         ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0.0)
+
+
+def legend_overlaps(fig, ax):
+    """The other axes of the figure (colour bars) whose drawn extent, tick labels and label
+    included, the legend of `ax` overlaps, as measured by the renderer after layout."""
+    legend = ax.get_legend()
+    if legend is None:
+        return []
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    box = legend.get_window_extent(renderer)
+    return [other for other in fig.axes
+            if other is not ax and box.overlaps(other.get_tightbbox(renderer))]
 
 
 def render_figure(item):
@@ -278,30 +319,33 @@ def render_figure(item):
         ax.grid(True, alpha=0.3)
     if get_float(item, "legend", 1) and ax.get_legend_handles_labels()[0]:
         place_legend(fig, ax, get_float(item, "legend_outside", 0))
+        if legend_overlaps(fig, ax):  # a legend on a colour bar hides its scale: never draw it
+            raise RuntimeError(f"{item.name}: the legend overlaps the colour bar")
     buf = io.BytesIO()
     # A colour bar's tick labels (category names) can reach past the tight layout: keep them.
     extra = {"bbox_inches": "tight", "pad_inches": 0.05} if ax.images else {}
     fig.savefig(buf, format="png", dpi=110, **extra)
     png = base64.b64encode(buf.getvalue()).decode("ascii")
     return (f'<figure><img src="data:image/png;base64,{png}" alt="{html.escape(title)}">\n'
-            f"<figcaption>{bold_title(title)} {html.escape(caption)}</figcaption></figure>\n")
+            f"<figcaption>{bold_title(title)} {text_html(caption)}</figcaption></figure>\n")
 
 
 def render_table(item):
-    """Return the <table> HTML of a table item; numeric-looking cells are right-aligned."""
+    """Return the HTML of a table item: its title and caption above it, the table in a box
+    that scrolls sideways when the table is wider than the page; numeric cells right-aligned."""
     columns, cells = ([as_str(v) for v in np.atleast_1d(attr(item, k)).ravel()]
                       for k in ("columns", "cells"))
     if not columns or len(cells) % len(columns):
         raise InputError(f"{item.name}: {len(cells)} cells do not fill rows of "
                          f"{len(columns)} columns")
     caption = (bold_title(as_str(attr(item, "title"))) + " "
-               + html.escape(as_str(attr(item, "caption", ""))))
-    head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+               + text_html(as_str(attr(item, "caption", ""))))
+    head = "".join(f"<th>{text_html(c)}</th>" for c in columns)
     rows = ["<tr>" + "".join(f'<td class="num">{html.escape(c)}</td>' if NUMERIC.fullmatch(c)
-                             else f"<td>{html.escape(c)}</td>" for c in cells[i:i + len(columns)])
+                             else f"<td>{text_html(c)}</td>" for c in cells[i:i + len(columns)])
             + "</tr>\n" for i in range(0, len(cells), len(columns))]
-    return (f"<table><caption>{caption}</caption>\n<thead><tr>{head}</tr></thead>\n"
-            f"<tbody>\n{''.join(rows)}</tbody></table>\n")
+    return (f'<p class="table-title">{caption}</p>\n<div class="table-wrap"><table>\n'
+            f"<thead><tr>{head}</tr></thead>\n<tbody>\n{''.join(rows)}</tbody></table></div>\n")
 
 
 def render_item(item):

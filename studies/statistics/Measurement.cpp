@@ -68,9 +68,30 @@ std::string formatNumber(double v, int digits) {
 
 std::string formatCompact(double v) { return fmt::format("{:g}", v); }
 
-std::string format(const Measurement& m, int digits) {
+namespace {
+
+// A positive number to two significant digits: 2.1, 0.031, 120, 4.6e-7.
+std::string twoSignificant(double x) {
+  const int exponent = static_cast<int>(std::floor(std::log10(x)));
+  if (exponent >= -4 && exponent < 5) return fmt::format("{:.{}f}", x, std::max(0, 1 - exponent));
+  return fmt::format("{:.1f}e{}", x / std::pow(10.0, exponent), exponent);
+}
+
+}  // namespace
+
+std::string format(const Measurement& m, int digits, const std::string& unit) {
   if (!m.valid()) return "–";
-  if (!std::isfinite(m.error)) return formatNumber(m.value, digits);
+  const std::string u = unit.empty() ? "" : " " + unit;
+  if (!std::isfinite(m.error)) return formatNumber(m.value, digits) + u;
+  // A zero error is no spread among the values combined (seeds that agree exactly), not a
+  // measurement without uncertainty: "0.00 ± 0.00" would claim one.
+  if (m.error == 0) return formatNumber(m.value, digits) + u + " (error 0: no spread)";
+  // Its error as large as the value: the sign and size are not measured, only a bound.
+  if (m.error > 0 && m.error >= std::abs(m.value)) {
+    const std::string bound = twoSignificant(std::abs(m.value) + m.error);
+    return fmt::format("{}{}{} (not resolved: error ≥ value)", m.value < 0 ? "> -" : "< ", bound,
+                       u);
+  }
   // At least `digits` decimals, more if needed to show two significant digits of the error;
   // an error below 1e-4 in a power of ten, so that no small number prints as 0.00000.
   if (m.error > 0 && m.error < 1e-4) {
@@ -79,12 +100,17 @@ std::string format(const Measurement& m, int digits) {
     const double scale = std::pow(10.0, exponent);
     const int decimals =
         std::max(1, exponent + 1 - static_cast<int>(std::floor(std::log10(m.error))));
-    return fmt::format("({:.{}f} ± {:.{}f})e{}", m.value / scale, decimals, m.error / scale,
-                       decimals, exponent);
+    return fmt::format("({:.{}f} ± {:.{}f})e{}{}", m.value / scale, decimals, m.error / scale,
+                       decimals, exponent, u);
   }
   if (m.error > 0)
     digits = std::clamp(1 - static_cast<int>(std::floor(std::log10(m.error))), digits, 5);
-  return fmt::format("{:.{}f} ± {:.{}f}", m.value, digits, m.error, digits);
+  return fmt::format("{:.{}f} ± {:.{}f}{}", m.value, digits, m.error, digits, u);
+}
+
+std::string formatOr(const Measurement& m, const std::string& absent, int digits,
+                     const std::string& unit) {
+  return m.valid() ? format(m, digits, unit) : absent;
 }
 
 }  // namespace granwave

@@ -27,8 +27,15 @@ Measurement meanAndStandardError(const std::vector<double>& values);
 double sigmaDistance(const Measurement& a, const Measurement& b);
 
 // "1.64 ± 0.45" with `digits` decimals, or more (up to 5) so that the error keeps two
-// significant digits; "–" when invalid.
-std::string format(const Measurement& m, int digits = 2);
+// significant digits (an error below 1e-4 in a power of ten: "(1.2 ± 0.3)e-7"); `unit`, if
+// given, after the number. A value whose error is as large as itself is not measured: it
+// prints as its one-sigma bound, "< 2.1 (not resolved: error ≥ value)" (|value| + error;
+// "> -2.1" for a negative value); a zero error, "0.92 (error 0: no spread)". "–" when invalid:
+// formatOr gives the reason instead.
+std::string format(const Measurement& m, int digits = 2, const std::string& unit = "");
+// format(m, digits, unit), or `absent` (why there is no value) when m is invalid.
+std::string formatOr(const Measurement& m, const std::string& absent, int digits = 2,
+                     const std::string& unit = "");
 std::string formatNumber(double v, int digits = 2);
 // The shortest form of a number ("{:g}": 2.5, 1e-05), for run labels and scene overrides.
 std::string formatCompact(double v);

@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace granwave {
@@ -45,6 +46,12 @@ Figure spaceTimeFigure(const PhaseProfiles& p, double d, double height, std::str
   sf.style = "points";
   sf.marker.push_back('^');  // not = "^": a GCC 12 -Wrestrict false positive here
   fig.series = {sp, sl, sc, sf};
+  // The box over the cycle and the profiles' rows: a front far above it (a hydro layer's few
+  // fast cells) would squeeze the layer into a strip; it is drawn at the edge instead.
+  if (plate.empty()) return fig;
+  const double low = std::min(fig.image.front().y0, *std::min_element(plate.begin(), plate.end()));
+  const double high = std::max(fig.image.front().y1, *std::max_element(lid.begin(), lid.end()));
+  limitYAxis(fig, low, high, "the rows and the box over the cycle", "d");
   return fig;
 }
 

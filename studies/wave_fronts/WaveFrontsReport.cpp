@@ -44,7 +44,7 @@ Table paperTable() {
   t.title = "Front speeds (lab frame), centre-of-mass period and collision time";
   t.caption =
       "Paper: Huang, Sec. IV (wet fronts, Fig. 5) and Fig. 6a (collision time = lowest point of "
-      "the centre of mass). Errors are one sigma.";
+      "the centre of mass). Errors are one sigma; '–': the paper gives no such number.";
   t.columns = {"source",
                "after weak impact (m/s)",
                "after strong impact (m/s)",
@@ -83,15 +83,22 @@ std::string peakJumpText(const WaveFrontsResults& r) {
          "hierarchy below compares.";
 }
 
+// A T~g-peak front speed, or why there is none.
+std::string peakCell(const Measurement& m) {
+  return formatOr(m, "none: no T~g peak above 0.5 T0 rose from an impact");
+}
+
 // One law's rows of the paper table and its series in the front and centre-of-mass figures.
 void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, Figure& fronts,
               Figure& com) {
   const double d = c.scenes.base[0].particles.diameter;
   const std::string name = kLawNames[law];
-  t.rows.push_back({fmt::format("ED {} ({} seeds × {:g} s)", name, p.seeds_used, c.duration),
-                    format(p.ed.weak), format(p.ed.strong), format(p.ed.all),
-                    format(p.tracked.speed), periodList(p.periods),
-                    formatNumber(p.collision_phase)});
+  t.rows.push_back(
+      {fmt::format("ED {} ({} seed{} × {:g} s)", name, p.seeds_used, p.seeds_used == 1 ? "" : "s",
+                   c.duration),
+       peakCell(p.ed.weak), peakCell(p.ed.strong), peakCell(p.ed.all),
+       formatOr(p.tracked.speed, p.tracked.why_none.empty() ? "none" : p.tracked.why_none),
+       periodList(p.periods), formatNumber(p.collision_phase)});
   if (p.first) {
     const PhaseProfiles& first = p.first->profiles;
     fronts.series.push_back(frontSeries(first, d, "ED " + name, kLawColors[law], "^"));
@@ -107,8 +114,8 @@ void paperLaw(const WaveFrontsConfig& c, int law, const PaperLaw& p, Table& t, F
       continue;
     }
     t.rows.push_back(
-        {row, format(h.fronts.weak), format(h.fronts.strong), format(h.fronts.all),
-         format(h.tracked),
+        {row, peakCell(h.fronts.weak), peakCell(h.fronts.strong), peakCell(h.fronts.all),
+         formatOr(h.tracked, "none: no velocity-jump front resolved"),
          h.fields->periodic ? std::to_string(h.fields->period) : "none in the cycles run",
          formatNumber(h.collision_phase)});
     if (v != 0) continue;
@@ -154,6 +161,12 @@ void paperSection(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report&
   com.xlabel = "t / T";
   com.ylabel = "z_CM / d (lab frame)";
   for (int law = 0; law < kLaws; ++law) paperLaw(c, law, r.paper[law], t, fronts, com);
+  // The box moves with the plate: in its frame the layer lives between 0 and the lid.
+  double box = 0;
+  for (const Scene& sc : c.scenes.base)
+    box = std::max(box, sc.container.height / sc.particles.diameter);
+  fronts.series.push_back(horizontalLine(box, "lid", 0, "grey"));
+  limitYAxis(fronts, 0.0, box, "the box (plate to lid)", "d");
   s.add(std::move(t));
   s.addText(peakJumpText(r));
   s.add(std::move(fronts));
@@ -208,24 +221,46 @@ void profileSections(const WaveFrontsConfig& c, const WaveFrontsResults& r, Repo
   }
 }
 
-// The report's summary: the wet and dry fronts against the paper's, the models' verdicts, the
-// wet layer's time in the period-2 state.
-void summarise(const WaveFrontsResults& r, const std::string& verdicts, Report& report) {
+// One impact's velocity-jump front as the headline states it, beside the paper's if given.
+std::string frontAnswer(const Measurement& m, const std::string& impact, const Measurement* paper) {
+  if (!m.valid()) return fmt::format("none measured after the {} impact", impact);
+  std::string s = fmt::format("{} after the {} impact", format(m, 2, "m/s"), impact);
+  if (paper)
+    s += fmt::format(" (paper {}: {} sigma away)", format(*paper, 2, "m/s"),
+                     formatNumber(std::abs(sigmaDistance(m, *paper)), 1));
+  return s;
+}
+
+// A layer's velocity-jump fronts after its weak and strong impacts, or why there are none.
+std::string frontsAnswer(const VelocityFronts& v, bool paper) {
+  if (!v.weak.valid() && !v.strong.valid())
+    return "none measured after either impact (" +
+           (v.why_none.empty() ? std::string("no velocity-jump front matched to them")
+                               : v.why_none) +
+           ")";
+  return frontAnswer(v.weak, "weak", paper ? &kPaperWeakWet : nullptr) + "; " +
+         frontAnswer(v.strong, "strong", paper ? &kPaperStrongWet : nullptr);
+}
+
+// The report's headline, one answer per line: the wet and dry fronts against the paper's, the
+// models' verdicts, the wet layer's time in the period-2 state.
+void summarise(const WaveFrontsResults& r, const std::vector<std::string>& verdicts,
+               Report& report) {
   const VelocityFronts& wet = r.paper[1].tracked;
   const VelocityFronts& dry = r.paper[0].tracked;
-  report.summary = fmt::format(
-      "Particles, wet layer: velocity-jump fronts at {} m/s after the weak and {} m/s after "
-      "the strong impact (paper: 1.61 ± 0.25 and 1.95 ± 0.25; {} and {} sigma away). Dry "
-      "layer: {} and {} m/s. {}",
-      format(wet.weak), format(wet.strong), formatNumber(sigmaDistance(wet.weak, kPaperWeakWet), 1),
-      formatNumber(sigmaDistance(wet.strong, kPaperStrongWet), 1), format(dry.weak),
-      format(dry.strong), verdicts);
+  std::string lines = fmt::format(
+      "- Wet layer, particles, velocity-jump fronts: {}.\n"
+      "- Dry layer, particles, velocity-jump fronts (the paper gives none): {}.\n",
+      frontsAnswer(wet, true), frontsAnswer(dry, false));
+  for (const std::string& v : verdicts) lines += "- " + v + "\n";
   const StateShares& st = r.states[1];
   if (st.windows > 0)
-    report.summary += fmt::format(
-        " Wet layer in the period-2 state {:.0f} % of the time (95 %: {:.0f}–{:.0f} %) and of "
-        "period 2 in {} of {} seeds.",
-        100 * st.time_share, 100 * st.time_low, 100 * st.time_high, st.seeds_period2, st.seeds);
+    lines += fmt::format(
+        "- Wet layer's state: period 2 for {:.0f} % of the time (95 % interval {:.0f}–{:.0f} %, "
+        "from {} windows of its runs); {} of {} seeds have period 2 over the whole run.\n",
+        100 * st.time_share, 100 * st.time_low, 100 * st.time_high, st.windows, st.seeds_period2,
+        st.seeds);
+  report.summary = lines;
 }
 
 }  // namespace

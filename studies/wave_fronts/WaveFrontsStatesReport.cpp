@@ -13,8 +13,13 @@ std::string share(double p, double lo, double hi) {
   return fmt::format("{:.2f} ({:.2f}–{:.2f})", p, lo, hi);
 }
 
+// A state's value combined over the seeds that gave one, or why there is none: only seeds
+// with at least as many windows in the state as blocks have its fields.
 std::string withSeeds(const Measurement& m, int seeds) {
-  return m.valid() ? fmt::format("{} ({} seeds)", format(m), seeds) : "–";
+  if (!m.valid())
+    return seeds == 0 ? "none: no seed with as many windows in this state as blocks gave one"
+                      : "none: not resolved in this state's fields";
+  return fmt::format("{} ({} seed{})", format(m), seeds, seeds == 1 ? "" : "s");
 }
 }  // namespace
 
@@ -49,8 +54,8 @@ void stateSection(const WaveFrontsResults& r, Report& report) {
          fmt::format("{} ({} period 2)", st.windows, st.windows_period2),
          share(st.time_share, st.time_low, st.time_high), withSeeds(st.front[0], st.front_seeds[0]),
          withSeeds(st.front[1], st.front_seeds[1]),
-         law == 1 ? withSeeds(st.r_x[0], st.r_x_seeds[0]) : "–",
-         law == 1 ? withSeeds(st.r_x[1], st.r_x_seeds[1]) : "–"});
+         law == 1 ? withSeeds(st.r_x[0], st.r_x_seeds[0]) : "wet layer only",
+         law == 1 ? withSeeds(st.r_x[1], st.r_x_seeds[1]) : "wet layer only"});
   }
   s.add(std::move(t));
 }

@@ -31,7 +31,21 @@ void sweepSeries(const std::vector<double>& x, const std::vector<SweepPoint>& po
 }
 
 std::string hydroCell(const SweepPoint& s) {
-  return s.hydro_ok ? format(s.hydro) : "failed: " + shortReason(s.hydro_failure);
+  if (!s.hydro_ok) return "failed: " + shortReason(s.hydro_failure);
+  return formatOr(s.hydro, "none: no T~g peak above 0.5 T0 rose from an impact");
+}
+
+std::string particleCell(const SweepPoint& s) {
+  if (s.layer_period < 0) return "failed (Runs and cost gives why)";
+  return formatOr(s.ed, "none: no T~g peak above 0.5 T0 rose from an impact");
+}
+
+// A plot whose every point is missing says so, instead of showing empty axes unexplained.
+void noteEmpty(Figure& fig) {
+  for (const Series& s : fig.series)
+    for (double y : s.y)
+      if (std::isfinite(y)) return;
+  fig.caption += " No run gave a front speed here (the table says why): the plot is empty.";
 }
 
 // A measured caveat, stated only when the runs show it: in deep layers the T~g peak above the
@@ -46,13 +60,13 @@ void deepLayerCaveat(const WaveFrontsResults& r, ReportSection& s) {
   if (fastest.valid() &&
       fastest.value > 1.5 * std::max(r.paper[0].ed.all.value, r.paper[1].ed.all.value))
     s.addText(fmt::format(
-        "Caveat: some layers give front speeds up to {} m/s, more than 1.5 times the paper "
+        "Caveat: some layers give front speeds up to {}, more than 1.5 times the paper "
         "scene's. A front speed is the slope of a straight line through the heights of the "
         "T~g peak above 0.5 T0; where that peak does not travel as one maximum (in the deep "
         "layers inspected it jumps between the plate region and the top of the layer within a "
         "few phases), the slope is not a front speed. Read the trend with N from the layers "
         "whose speeds have small errors.",
-        format(fastest)));
+        format(fastest, 2, "m/s")));
 }
 
 // CPU seconds per answer against N: the particles' cost per cycle times the cycles one answer
@@ -97,6 +111,12 @@ std::string trackedCell(const VelocityFronts& v) {
   return v.why_none.empty() ? "–" : v.why_none;
 }
 
+// The Rankine-Hugoniot speed of the fronts, or why there is none.
+std::string jumpCell(const VelocityFronts& v) {
+  if (v.jump_speed.valid()) return format(v.jump_speed);
+  return v.speed.valid() ? "undetermined: density jump below 2 %" : "none: no front";
+}
+
 // The velocity-jump tracker (docs/fields.md) over the sweep's seeds, beside the hydro solver's
 // fronts found the same way and the Rankine-Hugoniot speeds from the states either side.
 void trackedDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, ReportSection& s) {
@@ -114,12 +134,10 @@ void trackedDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
   for (std::size_t i = 0; i < c.counts.size(); ++i) {
     std::vector<std::string> row{std::to_string(c.counts[i])};
     for (int law = 0; law < kLaws; ++law) row.push_back(trackedCell(r.n_sweep[law][i].tracked));
-    for (int law = 0; law < kLaws; ++law)
-      row.push_back(format(r.n_sweep[law][i].tracked.jump_speed));
+    for (int law = 0; law < kLaws; ++law) row.push_back(jumpCell(r.n_sweep[law][i].tracked));
     for (int law = 0; law < kLaws; ++law)
       row.push_back(trackedCell(r.n_sweep[law][i].hydro_tracked));
-    for (int law = 0; law < kLaws; ++law)
-      row.push_back(format(r.n_sweep[law][i].hydro_tracked.jump_speed));
+    for (int law = 0; law < kLaws; ++law) row.push_back(jumpCell(r.n_sweep[law][i].hydro_tracked));
     t.rows.push_back(row);
   }
   s.add(std::move(t));
@@ -181,13 +199,14 @@ void depthSection(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report&
     for (std::size_t i = 0; i < c.counts.size(); ++i) {
       const SweepPoint& p = r.n_sweep[law][i];
       std::vector<std::string>& row = rows[c.counts[i]];
-      row[1 + law] = format(p.ed);
+      row[1 + law] = particleCell(p);
       row[5 + law] = formatNumber(p.collision_phase);
       row[3 + law] = hydroCell(p);
     }
     sweepSeries(x, r.n_sweep[law], law, fig);
   }
   for (auto& [n, row] : rows) t.rows.push_back(row);
+  noteEmpty(fig);
   s.add(std::move(fig));
   s.add(std::move(t));
   deepLayerCaveat(r, s);
@@ -212,7 +231,7 @@ void wetLawSection(const WaveFrontsResults& r, Report& report) {
     fw.ylabel = "front speed (m/s, lab)";
     for (std::size_t i = 0; i < sw.values.size(); ++i) {
       const SweepPoint& p = sw.points[i];
-      tw.rows.push_back({sw.key, formatCompact(sw.values[i]), format(p.ed), hydroCell(p),
+      tw.rows.push_back({sw.key, formatCompact(sw.values[i]), particleCell(p), hydroCell(p),
                          p.layer_period >= 0 ? std::to_string(p.layer_period) : "–"});
     }
     std::vector<double> y, e, yh, eh;
@@ -227,6 +246,7 @@ void wetLawSection(const WaveFrontsResults& r, Report& report) {
     hs.marker = "s";
     hs.linestyle = "--";
     fw.series.push_back(hs);
+    noteEmpty(fw);
     w.add(std::move(fw));
   }
   w.add(std::move(tw));

@@ -5,11 +5,18 @@ Usage: check_report.py REPORT.html
 
 Checks the DOM after scripts ran: every figure image decoded, every table has
 body rows each holding a number (or the reason a run failed), no empty cell or
-figure, at least one <h2>, and no sideways scrolling in a 1280 px wide window
-(wide tables wrap);
-and that a screenshot shows something.  Exit 0 if all good, else 1 with one
-line per failure on stderr.
+figure, at least one <h2>, and no sideways scrolling in a 1280 px wide window;
+and that a screenshot shows something.  A copy of the page with two scripts of
+this checker added (PROBE) also fails on: any console error, uncaught exception
+or resource that failed to load; a table wider than its column without a box
+that scrolls sideways, or such a box wider than the page; a cell whose content
+is wider than the cell; a number or a word broken across two lines (in tables,
+lists, paragraphs and captions; a word of letters may break at its own hyphen).
+Legends inside the figures' images are not in the DOM: render_report.py itself
+refuses to draw a legend that overlaps a colour bar.  Exit 0 if all good, else
+1 with one line per failure on stderr.
 """
+import json
 import os
 import pathlib
 import re
@@ -23,6 +30,95 @@ NUMBER = re.compile(r"[-+]?\d+(\.\d+)?([eE][-+]?\d+)?")
 TIMEOUT_S = 120
 WINDOW = (1280, 1000)  # px, a laptop screen
 MIN_SCREENSHOT_BYTES = 10 * 1024
+MAX_LAYOUT_FAILURES = 20  # listed; the rest counted
+
+# Added at the start of <head>: records console errors, uncaught exceptions and resources that
+# failed to load, before any script of the page runs.
+PROBE_HEAD = """<script>(function () {
+  var errors = window.__checkReportErrors = [];
+  var consoleError = console.error;
+  console.error = function () {
+    errors.push("console error: " + Array.prototype.join.call(arguments, " "));
+    return consoleError.apply(console, arguments);
+  };
+  window.addEventListener("error", function (e) {
+    var el = e.target;
+    errors.push(el && el !== window && el.tagName
+                ? "failed to load <" + el.tagName.toLowerCase() + ">"
+                : "uncaught exception: " + e.message);
+  }, true);
+  window.addEventListener("unhandledrejection", function (e) {
+    errors.push("unhandled promise rejection: " + e.reason);
+  });
+})();</script>"""
+
+# Added at the end of <body>: after the page loaded and laid out, measures every table and
+# text and writes the findings into <body data-check-errors> and <body data-check-layout>.
+PROBE_BODY = """<script>(function () {
+  function scroller(el) {
+    for (var p = el.parentElement; p && p !== document.body; p = p.parentElement) {
+      var ox = getComputedStyle(p).overflowX;
+      if (ox === "auto" || ox === "scroll") return p;
+    }
+    return null;
+  }
+  // Words between spaces (not no-break spaces; a value, "±" and its error are one word), split
+  // after the hyphen of letters-hyphen-letters.
+  function pieces(text) {
+    var out = [], re = /[^ \\t\\n\\r\\f]+(?:[ \\u00a0]*\\u00b1[ \\u00a0]*[^ \\t\\n\\r\\f]+)*/g, m;
+    while ((m = re.exec(text)) !== null) {
+      var start = m.index, word = m[0], cut = /[A-Za-z]-(?=[A-Za-z])/g, h;
+      while ((h = cut.exec(word)) !== null) {
+        out.push([start, m.index + h.index + 2]);
+        start = m.index + h.index + 2;
+      }
+      out.push([start, m.index + word.length]);
+    }
+    return out;
+  }
+  function brokenWords(root, where, found) {
+    var walk = document.createTreeWalker(root, NodeFilter.SHOW_TEXT), node;
+    var range = document.createRange();
+    while ((node = walk.nextNode())) {
+      pieces(node.data).forEach(function (p) {
+        range.setStart(node, p[0]);
+        range.setEnd(node, p[1]);
+        var tops = Array.prototype.map.call(range.getClientRects(), function (r) {
+          return r.top;
+        });
+        if (tops.length > 1 && Math.max.apply(null, tops) - Math.min.apply(null, tops) > 2)
+          found.push(where + ": '" + node.data.slice(p[0], p[1]) + "' is broken across lines");
+      });
+    }
+  }
+  function measure() {
+    var found = [], page = document.documentElement.clientWidth;
+    var tables = document.getElementsByTagName("table");
+    for (var t = 0; t < tables.length; t++) {
+      var table = tables[t], name = "table " + (t + 1), box = scroller(table);
+      var width = table.getBoundingClientRect().width;
+      var column = table.parentElement.getBoundingClientRect().width;
+      if (!box && width > column + 1)
+        found.push(name + " is " + Math.round(width) + " px wide in a " + Math.round(column) +
+                   " px column without a box that scrolls sideways");
+      if (box && box.getBoundingClientRect().right > page + 1)
+        found.push(name + ": its scroll box reaches past the page");
+      var cells = table.querySelectorAll("td, th");
+      for (var c = 0; c < cells.length; c++) {
+        if (cells[c].scrollWidth > cells[c].clientWidth + 1)
+          found.push(name + ": the content of cell '" + cells[c].textContent.slice(0, 40) +
+                     "' is wider than the cell");
+        brokenWords(cells[c], name, found);
+      }
+    }
+    var texts = document.querySelectorAll("body > p, section > p, li, figcaption, p.table-title");
+    for (var i = 0; i < texts.length; i++)
+      brokenWords(texts[i], texts[i].tagName.toLowerCase(), found);
+    document.body.setAttribute("data-check-layout", JSON.stringify(found));
+    document.body.setAttribute("data-check-errors", JSON.stringify(window.__checkReportErrors));
+  }
+  window.addEventListener("load", function () { setTimeout(measure, 0); });
+})();</script>"""
 
 
 class ReportDom(HTMLParser):
@@ -140,14 +236,43 @@ def check_dom(dom):
             failures.append(f"figure {f} has no image")
     if dom.h2_count < 1:
         failures.append("the page has no <h2> section heading")
+    return failures + check_probe(dom)
+
+
+def check_probe(dom):
+    """Failures the probe scripts recorded (console errors, layout), or that they did not run."""
+    failures = []
+    for name, what in (("data-check-errors", "console"), ("data-check-layout", "layout")):
+        try:
+            found = json.loads(dom.body_attrs[name])
+        except (KeyError, TypeError, ValueError):
+            failures.append(f"the checker's {what} probe did not run (no <body {name}>)")
+            continue
+        failures += [f"{what}: {f}" for f in found[:MAX_LAYOUT_FAILURES]]
+        if len(found) > MAX_LAYOUT_FAILURES:
+            failures.append(f"{what}: {len(found) - MAX_LAYOUT_FAILURES} more")
     return failures
+
+
+def probed_copy(path, tmp):
+    """A copy of the page in `tmp` with the probe scripts added; its file:// URL."""
+    with open(path, encoding="utf-8") as f:
+        page = f.read()
+    head, body = page.find("<head>"), page.rfind("</body>")
+    if head < 0 or body < 0:
+        raise RuntimeError("the page has no <head> or no </body>")
+    page = (page[:head + 6] + PROBE_HEAD + page[head + 6:body] + PROBE_BODY + page[body:])
+    copy = os.path.join(tmp, "probed.html")
+    with open(copy, "w", encoding="utf-8") as f:
+        f.write(page)
+    return pathlib.Path(copy).as_uri()
 
 
 def check(path, chromium):
     """Render `path` and return the list of failures (empty if all good)."""
-    url = pathlib.Path(path).resolve().as_uri()  # file:///abs/path, percent-encoded
     tmp = tempfile.mkdtemp(prefix="check_report-")
     try:
+        url = probed_copy(path, tmp)  # file:///abs/path, percent-encoded
         dom = ReportDom()
         dom.feed(run_chromium(chromium, tmp, "dom", "--dump-dom", url))
         dom.close()

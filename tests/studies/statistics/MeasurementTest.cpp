@@ -64,9 +64,28 @@ TEST(StudyMeasurement, FormatPrintsValuePlusMinusErrorOrADashWhenInvalid) {
   EXPECT_EQ(granwave::format({1.64, 0.45}, 3), "1.640 ± 0.450");
   EXPECT_EQ(granwave::format({1.64, kNaN}), "1.64");
   // Small numbers keep two significant digits of their error instead of printing 0.00000.
-  EXPECT_EQ(granwave::format({1.2e-7, 3.4e-7}), "(1.2 ± 3.4)e-7");
+  EXPECT_EQ(granwave::format({3.4e-7, 1.2e-7}), "(3.4 ± 1.2)e-7");
   EXPECT_EQ(granwave::format({-5.5e-6, 1.3e-7}), "(-5.50 ± 0.13)e-6");
+  EXPECT_EQ(granwave::format({1.64, 0.45}, 2, "m/s"), "1.64 ± 0.45 m/s");
   EXPECT_EQ(granwave::format(Measurement{}), "–");
   EXPECT_EQ(granwave::formatNumber(kNaN), "–");
   EXPECT_EQ(granwave::formatNumber(0.125, 1), "0.1");
+}
+
+// An error as large as the value leaves neither its size nor its sign measured: the report
+// gives the one-sigma bound |value| + error and says why, never "1.04 ± 1.04".
+TEST(StudyMeasurement, FormatGivesABoundWhenTheErrorIsAsLargeAsTheValue) {
+  EXPECT_EQ(granwave::format({1.04, 1.04}), "< 2.1 (not resolved: error ≥ value)");
+  EXPECT_EQ(granwave::format({1.04, 1.04}, 2, "m/s"), "< 2.1 m/s (not resolved: error ≥ value)");
+  EXPECT_EQ(granwave::format({-3.2, 5.58}), "> -8.8 (not resolved: error ≥ value)");
+  EXPECT_EQ(granwave::format({0.0, 0.031}), "< 0.031 (not resolved: error ≥ value)");
+  EXPECT_EQ(granwave::format({1.2e-7, 3.4e-7}), "< 4.6e-7 (not resolved: error ≥ value)");
+  EXPECT_EQ(granwave::format({1.64, 1.63}), "1.64 ± 1.63");  // just resolved
+  // Seeds that agree exactly have no spread: not "0.00 ± 0.00".
+  EXPECT_EQ(granwave::format({0.0, 0.0}), "0.00 (error 0: no spread)");
+}
+
+TEST(StudyMeasurement, FormatOrGivesTheReasonWhenThereIsNoValue) {
+  EXPECT_EQ(granwave::formatOr(Measurement{}, "none: no front"), "none: no front");
+  EXPECT_EQ(granwave::formatOr({1.64, 0.45}, "none: no front", 2, "m/s"), "1.64 ± 0.45 m/s");
 }
