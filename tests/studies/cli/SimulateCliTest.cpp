@@ -115,8 +115,8 @@ TEST_F(SimulateCli, FieldsWithoutCellsKeepTheProfilesAndLeaveOutTheCells) {
                        " --no-output --fields without.h5 "
                        "--fields-without-cells");
   ASSERT_EQ(r.code, 0) << r.err;
-  const granwave::h5::File with((dir_ / "with.h5").string());
-  const granwave::h5::File without((dir_ / "without.h5").string());
+  const auto with = granwave::h5::File::openReadOnly((dir_ / "with.h5").string());
+  const auto without = granwave::h5::File::openReadOnly((dir_ / "without.h5").string());
   EXPECT_EQ(with.readAttribute<std::int64_t>("/", "cells"), 1);
   EXPECT_EQ(without.readAttribute<std::int64_t>("/", "cells"), 0);
   EXPECT_TRUE(with.isDataset("/fields/area_fraction"));
