@@ -58,10 +58,23 @@ def arguments(entry):
         if a in ("-o", "-c"):
             skip = a == "-o"
             continue
-        # The sanitizer options stay: a precompiled header made with them is read only with them.
-        if a == entry["file"] or a.startswith("-W"):
+        if a == entry["file"] or a.startswith("-fsanitize") or a.startswith("-W"):
             continue
         out.append(a)
+    # CMake's precompiled headers (-include .../cmake_pch.hxx, and clang's -Xclang -include-pch
+    # pairs) are the compiler's own files: libclang parses the headers themselves instead.
+    kept = []
+    for a in out:
+        if "cmake_pch" in a:
+            if kept and kept[-1] in ("-include", "-Xclang"):
+                kept.pop()
+                if kept and kept[-1] in ("-include-pch", "-include"):
+                    kept.pop()
+                    if kept and kept[-1] == "-Xclang":
+                        kept.pop()
+            continue
+        kept.append(a)
+    out = kept
     return out + ["-Wno-everything"]
 
 
@@ -134,8 +147,12 @@ def compile_entries(builds, selected):
             print(f"check_code_shape: {db} not found (configure with CMake first)", file=sys.stderr)
             return None
         with open(db) as f:
+            # The project's own files only: not the files CMake makes in the build tree
+            # (the precompiled headers' sources), which may lie under ROOT too.
             mine = [e for e in json.load(f)
                     if os.path.realpath(e["file"]).startswith(ROOT + os.sep)
+                    and os.path.relpath(os.path.realpath(e["file"]), ROOT).split(os.sep)[0]
+                    in SOURCE_DIRS
                     and selected(os.path.relpath(os.path.realpath(e["file"]), ROOT))]
         stale = [e["file"] for e in mine if not os.path.exists(e["file"])]
         if stale:

@@ -16,6 +16,18 @@
 #include <sstream>
 #include <string>
 
+// AddressSanitizer's build: GCC defines __SANITIZE_ADDRESS__, clang has __has_feature.
+#if defined(__SANITIZE_ADDRESS__)
+#define GRANWAVE_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GRANWAVE_ADDRESS_SANITIZER 1
+#endif
+#endif
+#ifndef GRANWAVE_ADDRESS_SANITIZER
+#define GRANWAVE_ADDRESS_SANITIZER 0
+#endif
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -188,7 +200,7 @@ TEST_F(FileSafetyCli, EmptyOrTruncatedSceneIsRefusedNotRunAsTheDryScene) {
 }
 
 TEST_F(FileSafetyCli, OutOfMemoryHasItsOwnExitCodeAndMessage) {
-#ifdef __SANITIZE_ADDRESS__
+#if GRANWAVE_ADDRESS_SANITIZER
   GTEST_SKIP() << "AddressSanitizer needs more address space than the limit below leaves";
 #endif
   // 120 MB of address space is too little for a million grains (their state, event queue
