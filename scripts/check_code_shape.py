@@ -8,10 +8,9 @@ Usage: check_code_shape.py BUILD_DIR... [--report] [--only PREFIX ...] [--max-fi
 Every C++ file of the repository (tests and benchmarks included) is counted for lines; the
 functions are found by parsing each translation unit of BUILD_DIR/compile_commands.json with
 libclang (Debian's python3-clang-14), so macros (TEST, TEST_F) and templates are seen as the
-compiler sees them. With several build trees, a file is parsed with the command of the first
-tree that compiles it: .ci/run names the sanitizer build (clang 14, whose precompiled headers
-libclang 14 reads, so GoogleTest and CLI11 are not parsed again for every file) before the
-Release build (which also compiles the test tiers the sanitizer build leaves out). A function's length is the lines from its name to its closing brace;
+compiler sees them, without CMake's precompiled headers (the compiler's own files). With
+several build trees, a file is parsed with the command of the first tree that compiles it
+(.ci/run names the Release build alone: it compiles every test tier). A function's length is the lines from its name to its closing brace;
 its nesting is the deepest chain of if / for / while / do / switch / try / lambda inside it
 (an `else if` continues its `if` and does not nest). Functions defined in headers are counted
 once. Exits 1 and lists the offenders if a limit is exceeded; --report lists the largest

@@ -16,17 +16,7 @@
 #include <sstream>
 #include <string>
 
-// AddressSanitizer's build: GCC defines __SANITIZE_ADDRESS__, clang has __has_feature.
-#if defined(__SANITIZE_ADDRESS__)
-#define GRANWAVE_ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GRANWAVE_ADDRESS_SANITIZER 1
-#endif
-#endif
-#ifndef GRANWAVE_ADDRESS_SANITIZER
-#define GRANWAVE_ADDRESS_SANITIZER 0
-#endif
+#include "AddressSanitizer.hpp"
 
 namespace fs = std::filesystem;
 

@@ -20,20 +20,9 @@
 #include <utility>
 #include <vector>
 
+#include "AddressSanitizer.hpp"
 #include "particles/H5mdReader.hpp"
 #include "scene/SceneParser.hpp"
-
-// AddressSanitizer's build: GCC defines __SANITIZE_ADDRESS__, clang has __has_feature.
-#if defined(__SANITIZE_ADDRESS__)
-#define GRANWAVE_ADDRESS_SANITIZER 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define GRANWAVE_ADDRESS_SANITIZER 1
-#endif
-#endif
-#ifndef GRANWAVE_ADDRESS_SANITIZER
-#define GRANWAVE_ADDRESS_SANITIZER 0
-#endif
 
 namespace fs = std::filesystem;
 
