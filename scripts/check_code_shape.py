@@ -8,11 +8,14 @@ Usage: check_code_shape.py BUILD_DIR... [--report] [--only PREFIX ...] [--max-fi
 Every C++ file of the repository (tests and benchmarks included) is counted for lines; the
 functions are found by parsing each translation unit of BUILD_DIR/compile_commands.json with
 libclang (Debian's python3-clang-14), so macros (TEST, TEST_F) and templates are seen as the
-compiler sees them, without CMake's precompiled headers (the compiler's own files). With
-several build trees, a file is parsed with the command of the first tree that compiles it
-(.ci/run names the Release build alone: it compiles every test tier). A function's length is the lines from its name to its closing brace;
-its nesting is the deepest chain of if / for / while / do / switch / try / lambda inside it
-(an `else if` continues its `if` and does not nest). Functions defined in headers are counted
+compiler sees them (with clang's precompiled headers, without GCC's). With several build
+trees, a file is parsed with the command of the first tree that compiles it: .ci/run names
+the sanitizer build (clang 14, precompiled headers libclang reads) and then the Release build
+(GCC), which alone compiles the test tiers the sanitizers do not run. A file that libclang
+cannot parse without errors is an offender: its functions would go uncounted. A function's
+length is the lines from its name to its closing brace; its nesting is the deepest chain of
+if / for / while / do / switch / try / lambda inside it (an `else if` continues its `if` and
+does not nest). Functions defined in headers are counted
 once. Exits 1 and lists the offenders if a limit is exceeded; --report lists the largest
 figures per folder whatever the limits; --only limits the check to files under the given
 folders (e.g. --only studies tests/studies), which .ci/run uses for the folders that meet it.
@@ -49,6 +52,11 @@ def source_files():
 
 def arguments(entry):
     args = entry["arguments"] if "arguments" in entry else shlex.split(entry["command"])
+    # clang's precompiled headers (the sanitizer build's) are libclang's own format: kept, a
+    # test file parses in a fraction of the time. They hold the sanitizer options they were
+    # made with, and clang refuses a header made with other options, so those stay too.
+    # GCC's (-include .../cmake_pch.hxx, read as .gch) are not: libclang parses the headers.
+    by_clang = "clang" in os.path.basename(args[0])
     out, skip = [], False
     for a in args[1:]:
         if skip:
@@ -57,24 +65,19 @@ def arguments(entry):
         if a in ("-o", "-c"):
             skip = a == "-o"
             continue
-        if a == entry["file"] or a.startswith("-fsanitize") or a.startswith("-W"):
+        if a == entry["file"] or a.startswith("-W") or (a.startswith("-fsanitize") and not by_clang):
             continue
         out.append(a)
-    # CMake's precompiled headers (-include .../cmake_pch.hxx, and clang's -Xclang -include-pch
-    # pairs) are the compiler's own files: libclang parses the headers themselves instead.
+    if by_clang:
+        return out + ["-Wno-everything"]
     kept = []
     for a in out:
         if "cmake_pch" in a:
-            if kept and kept[-1] in ("-include", "-Xclang"):
+            if kept and kept[-1] == "-include":
                 kept.pop()
-                if kept and kept[-1] in ("-include-pch", "-include"):
-                    kept.pop()
-                    if kept and kept[-1] == "-Xclang":
-                        kept.pop()
             continue
         kept.append(a)
-    out = kept
-    return out + ["-Wno-everything"]
+    return kept + ["-Wno-everything"]
 
 
 NESTING_KINDS = None
@@ -110,6 +113,11 @@ def functions_of(entry):
     tu = ci.Index.create().parse(entry["file"], args=arguments(entry),
                                  options=ci.TranslationUnit.PARSE_SKIP_FUNCTION_BODIES * 0)
     found = []
+    errors = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error]
+    if errors:
+        path = os.path.relpath(os.path.realpath(entry["file"]), ROOT)
+        found.append((path, 0, f"not parsed ({len(errors)} errors, first: {errors[0].spelling})",
+                      -1, 0))
 
     def visit(cursor):
         for c in cursor.get_children():
@@ -182,12 +190,14 @@ def main():
     entries = compile_entries(a.build, selected)
     if entries is None:
         return 2
-    functions = {}
+    functions, problems = {}, []
     with ProcessPoolExecutor(max_workers=a.j) as pool:
         for found in pool.map(functions_of, entries):
             for path, line, name, lines, depth in found:
+                if lines < 0:
+                    problems.append(f"{path}: {name}")
+                    continue
                 functions[(path, line)] = (name, lines, depth)
-    problems = []
     per_folder = {}
     for path in source_files():
         rel = os.path.relpath(path, ROOT)

@@ -156,6 +156,28 @@ TEST(HydroSolver, EnergyBudgetOfADrivenLayerClosesExactly) {
   EXPECT_NEAR(rate, work - loss, 1e-9 * scale);
 }
 
+// The solver's step is at most half a phase (solverOptions), which forces 2 M steps a cycle:
+// with M = 6000 phases that alone is past the 10000 steps a cycle that mean "no progress", so
+// the budget counts them on top (HydroSimulation::stepBudget). Checked cycle by cycle, so two
+// cycles of the driven layer show it (as `granwave hydro` runs them: 20 cells, dry beads).
+TEST(HydroSolver, FinePhaseResolutionRunsWithinTheStepBudget) {
+  ConstitutiveModel m = test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
+  HydroGeometry g;
+  g.cells = 20;
+  g.height = 30 * kD;
+  g.omega = 2 * std::numbers::pi * 10;
+  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
+  g.ramp_time = 0.1;
+  const GranularHydro1D pde(g, m, 300 * kMass / (30 * kD));
+  HydroRunOptions o;
+  o.samples_per_cycle = 6000;
+  o.max_cycles = 2;
+  HydroResult r;
+  ASSERT_NO_THROW(r = HydroSimulation(pde, o).run());
+  ASSERT_EQ(r.steps_per_cycle.size(), 2U);
+  for (long steps : r.steps_per_cycle) EXPECT_GT(steps, o.max_steps_per_cycle);
+}
+
 TEST(HydroSolver, TemperatureOfAColdCellAmongHotOnesDoesNotFall) {
   // Positivity by construction (docs/hydro.md): every sink of a cell's temperature vanishes
   // with it (pressure work, cooling, wall losses), while conduction from hotter neighbours

@@ -105,15 +105,6 @@ TEST_F(HydroCli, UndrivenSceneIsRejectedAndNothingWritten) {
   EXPECT_FALSE(fs::exists(dir_ / "h.h5"));
 }
 
-// The solver's step is at most half a phase, which forces 2 M steps a cycle: with M = 6000
-// phases that alone was past the old budget of 10000 steps a cycle ("no progress").
-TEST_F(HydroCli, FinePhaseResolutionRunsWithinTheStepBudget) {
-  const Result r =
-      run("[hydro]\ncells = 20\n[run]\nphases_per_cycle = 6000\nduration = 0.8\n", "-o h.h5");
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("periodic state  reached"), std::string::npos) << r.out;
-}
-
 // Walton's law with e_t0 = -1 makes every contact smooth: the rough continuum's rotational
 // temperature has no source. The scene is refused naming both keys and the equivalent choice.
 TEST_F(HydroCli, RoughParticlesWithSmoothContactsAreRefusedNamingTheKeys) {
