@@ -1,10 +1,12 @@
 #include "studies/continuum_sensitivity/ContinuumSensitivityReport.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "studies/statistics/Measurement.hpp"
 
@@ -107,6 +109,32 @@ Figure caseFigure(const ContinuumSensitivityConfig& config, std::size_t k,
   return f;
 }
 
+// One case's answer: how many variants stay within the tolerance, and for each that does not,
+// what moved it out (the tests of sensitivityChange: failed run, period, centre of mass, front).
+std::string caseAnswer(const ContinuumSensitivityConfig& config, std::size_t k,
+                       const SensitivityCaseResult& c) {
+  std::string outside;
+  for (std::size_t v = 1; v < c.changes.size(); ++v) {
+    const SensitivityChange& ch = c.changes[v];
+    if (ch.within) continue;
+    std::vector<std::string> why;
+    if (!c.answers[0].ok || !c.answers[v].ok) {
+      why.push_back("a run failed");
+    } else {
+      if (!ch.same_period) why.push_back("period changed");
+      if (!(ch.com < config.tolerance)) why.push_back("centre of mass moved " + percent(ch.com));
+      if (!(ch.front < config.tolerance))
+        why.push_back(std::isinf(ch.front) ? "a front appeared or vanished"
+                                           : "front moved " + percent(ch.front));
+    }
+    outside += fmt::format("{}{} ({})", outside.empty() ? "" : "; ",
+                           variantName(config.variants[k][v]), fmt::join(why, ", "));
+  }
+  return fmt::format("- {} ({}): {} of {} within; {}.\n", config.cases[k].name,
+                     kLawNames[config.cases[k].law], c.within, c.compared,
+                     outside.empty() ? "none outside" : "outside: " + outside);
+}
+
 }  // namespace
 
 void reportContinuumSensitivity(const ContinuumSensitivityConfig& config,
@@ -117,9 +145,11 @@ void reportContinuumSensitivity(const ContinuumSensitivityConfig& config,
     compared += c.compared;
   }
   report.summary = fmt::format(
-      "{} of {} runs with one numerical parameter halved or doubled give the base run's "
-      "period, centre-of-mass range and impact fronts within {:.0f} %.",
+      "- {} of {} runs with one numerical parameter halved or doubled give the base run's "
+      "period, centre-of-mass range and impact fronts within {:.0f} %.\n",
       within, compared, 100 * config.tolerance);
+  for (std::size_t k = 0; k < r.cases.size(); ++k)
+    report.summary += caseAnswer(config, k, r.cases[k]);
   ReportSection& s = report.section(
       "Sensitivity to the numerical parameters",
       "A continuum answer counts only if it does not move when a numerical or regularisation "

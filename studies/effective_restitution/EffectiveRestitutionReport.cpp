@@ -2,6 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <string>
+#include <vector>
+
 namespace granwave {
 
 namespace {
@@ -100,20 +103,23 @@ Table estimatesTable(const EffectiveRestitutionResults& r) {
   return t;
 }
 
-// Can one constant describe the law? The three estimates must agree within 2 sigma.
-std::string verdict(const EffectiveRestitutionResults& r) {
-  std::string v;
+// Can one constant describe the law? The three estimates must agree within 2 sigma. One
+// sentence per law: the section's text and the headline's answers.
+std::vector<std::string> verdicts(const EffectiveRestitutionResults& r) {
+  std::vector<std::string> v;
   for (int law = 0; law < kLaws; ++law) {
     const LawRestitution& l = r.law[law];
-    v += fmt::format(
-        "{} law: the three estimates {} (largest disagreement {:.1f} sigma); over the layer's "
-        "temperature range T/T0 = {:.3f} to {:.3f} the theory's e_eff runs from {:.3f} to "
-        "{:.3f}. ",
-        kLawNames[law],
-        l.compared == 0               ? "cannot be compared (runs failed)"
-        : l.largest_disagreement <= 2 ? "agree"
-                                      : "disagree",
-        l.largest_disagreement, l.layer_low, l.layer_high, l.theory_at_low, l.theory_at_high);
+    const std::string agreement =
+        l.compared == 0 ? "cannot be compared (runs failed)"
+                        : fmt::format("{} (largest disagreement {:.1f} sigma, over {} of 3 pairs)",
+                                      l.largest_disagreement <= 2 ? "agree within 2 sigma"
+                                                                  : "disagree by more than 2 sigma",
+                                      l.largest_disagreement, l.compared);
+    v.push_back(fmt::format(
+        "{} law: the three estimates (free cooling, collision statistics, hydro fit) {}; over "
+        "the layer's temperature range T/T0 = {:.3f} to {:.3f} the theory's e_eff runs from "
+        "{:.3f} to {:.3f}.",
+        kLawNames[law], agreement, l.layer_low, l.layer_high, l.theory_at_low, l.theory_at_high));
   }
   return v;
 }
@@ -135,17 +141,22 @@ void reportEffectiveRestitution(const EffectiveRestitutionConfig&,
       "over a cycle (least squares weighted by the block variance).");
   Figure fig = temperatureFigure();
   for (int law = 0; law < kLaws; ++law) addLawSeries(law, r.law[law], fig);
-  const std::string v = verdict(r);
+  const std::vector<std::string> v = verdicts(r);
   intro.add(estimatesTable(r));
   intro.add(std::move(fig));
   intro.add(coolingTable(r));
-  intro.addText(v +
+  std::string prose, answers;
+  for (const std::string& line : v) {
+    prose += line + " ";
+    answers += "- " + line + "\n";
+  }
+  intro.addText(prose +
                 "Free cooling in event-driven hard disks is known to run about 2 % slower than "
                 "Haff-Sonine because of velocity correlations (docs/physics.md), which biases "
                 "the cooling estimate of e_eff slightly upwards; late in the cooling the TC "
                 "model makes a growing share of collisions elastic (table), which does the "
                 "same, so the lowest temperature fitted is kept well above that regime.");
-  report.summary = v;
+  report.summary = answers;
 }
 
 }  // namespace granwave

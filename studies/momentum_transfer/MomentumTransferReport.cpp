@@ -262,7 +262,7 @@ void noResultsSection(const Results& a, Report& report) {
   ref.series.push_back(horizontalLine(kPaperDeficiency.value, "paper: 2.17 ± 0.56",
                                       kPaperDeficiency.error, "tab:green"));
   s.add(std::move(ref));
-  report.summary = "Every seed failed: no deficiency factor was measured.";
+  report.summary = "- Every seed failed: no deficiency factor was measured.";
 }
 
 // Fig. 7: profiles at t/T = 0.88, literally and at the same stage of each layer's impact.
@@ -357,16 +357,17 @@ void deficiencySection(const MomentumTransferConfig& c, const Results& a, Report
 
 // What the runs give: the verdict, its direction, why, how much is flow, and sensitivity.
 void verdictSection(const MomentumTransferConfig& c, const Results& a, Report& report) {
-  const std::string periods = layerPeriods(a);
   const double wave_end = static_cast<double>(a.n_wave) / a.per_cycle;
-  const bool reproduced = std::isfinite(a.z_paper) && std::abs(a.z_paper) <= 2.0;
+  const char* decided = !std::isfinite(a.z_paper)    ? "not reproduced, no value to compare"
+                        : std::abs(a.z_paper) <= 2.0 ? "reproduced, within 2 sigma"
+                                                     : "not reproduced, more than 2 sigma away";
   const std::string verdict = fmt::format(
-      "{}: the runs give r~_x = {} over the first {:g} T of the wet layer's impact wave "
-      "(combined over {} seed(s) of {:g} s; spread of r~_x(t) over the window {}), {} sigma "
-      "from the paper's 2.17 ± 0.56 and {} sigma from the binary-collision value 2.",
-      reproduced ? "Reproduced within 2 sigma" : "Not reproduced", format(a.r), wave_end,
-      a.ok().size(), c.duration, formatNumber(a.window_std), distance(a.z_paper),
-      distance(a.z_binary));
+      "- The runs give r~_x = {} over the first {:g} T of the wet layer's impact wave "
+      "(combined over {} seed(s) of {:g} s; spread of r~_x(t) over the window {}).\n"
+      "- Against the paper's 2.17 ± 0.56: {} ({} sigma).\n"
+      "- Against the binary-collision value 2: {} sigma.\n",
+      format(a.r), wave_end, a.ok().size(), c.duration, formatNumber(a.window_std), decided,
+      distance(a.z_paper), distance(a.z_binary));
   const std::string rms_pair = fmt::format("{} against {} mm/s", format(scaled(a.rms[0], 1e3), 1),
                                            format(scaled(a.rms[1], 1e3), 1));
   std::string direction;
@@ -374,15 +375,15 @@ void verdictSection(const MomentumTransferConfig& c, const Results& a, Report& r
     direction =
         a.r.value < 1.0
             ? fmt::format(
-                  "r~_x is below 1: RMS(v_x) of the dry layer is smaller than the wet layer's "
+                  "- r~_x is below 1: RMS(v_x) of the dry layer is smaller than the wet layer's "
                   "({} over the cells averaged), the reverse of the paper's deficiency; r_x > 1 "
                   "in a fraction {} of the (z, t) cells of the window, where the paper has r_x "
-                  "predominantly > 1.",
+                  "predominantly > 1.\n",
                   rms_pair, format(a.above_one))
             : fmt::format(
-                  "r~_x is above 1: RMS(v_x) of the wet layer is smaller than the dry layer's "
+                  "- r~_x is above 1: RMS(v_x) of the wet layer is smaller than the dry layer's "
                   "({}), as in the paper; r_x > 1 in a fraction {} of the (z, t) cells of the "
-                  "window.",
+                  "window.\n",
                   rms_pair, format(a.above_one));
   std::string ratios;
   for (const SeedPair* p : a.ok())
@@ -399,7 +400,7 @@ void verdictSection(const MomentumTransferConfig& c, const Results& a, Report& r
       "the reverse of the paper (surface waves dry, none wet), so the ratio that the paper "
       "reads as a deficiency of momentum transfer due to wetting comes out below 1 here. Layer "
       "periods dry / wet in these runs: {}.",
-      periods);
+      layerPeriods(a));
   const bool noisy[2] = {a.noise_share[0].value > 0.5, a.noise_share[1].value > 0.5};
   const std::string noise_note = noisy[0] && noisy[1]
                                      ? ": r_x compares mostly the noise floors of the two layers"
@@ -425,10 +426,10 @@ void verdictSection(const MomentumTransferConfig& c, const Results& a, Report& r
       format(a.r_all_rows), format(a.r_aligned));
   // The explanation of docs/fields.md applies only when these runs show what it explains.
   const bool below_one = a.r.valid() && a.r.value < 1;
-  report.section("What the runs give", verdict + " " + direction + "\n\n" +
+  report.section("What the runs give", verdict + direction + "\n" +
                                            (below_one ? why + "\n\n" : std::string()) + noise +
                                            "\n\n" + sensitivity);
-  report.summary = verdict + " " + direction;
+  report.summary = verdict + direction;
 }
 
 }  // namespace

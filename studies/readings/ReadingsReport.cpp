@@ -106,14 +106,21 @@ std::string summary(const ReadingsConfig& c, const ReadingsResults& r) {
     }
   }
   std::string s = fmt::format(
-      "{} readings of the paper's model text, each run with {} seeds per law and drive point; "
-      "nothing tuned. ",
+      "- {} readings of the paper's model text, each run with {} seeds per law and drive point; "
+      "nothing tuned.\n",
       c.readings.size(), c.seeds.size());
   if (!all.empty())
-    return s + fmt::format("Reproducing every statement checked: {}.", fmt::join(all, ", "));
+    s += fmt::format("- Reproducing every one of the {} statements checked: {}.\n",
+                     int{kStatements}, fmt::join(all, ", "));
+  else
+    s += fmt::format(
+        "- No reading reproduces all {} statements checked; the most ({}) hold for: "
+        "{}.\n",
+        int{kStatements}, most, fmt::join(best, ", "));
   return s +
-         fmt::format("No reading reproduces all {} statements checked; the most ({}) hold for: {}.",
-                     int{kStatements}, most, fmt::join(best, ", "));
+         "- What decides: a majority statement holds if the 68 % Wilson interval of the share of "
+         "seeds showing it lies above 1/2; a measured number holds within 2 sigma of the paper's "
+         "(its error and the paper's uncertainty combined).\n";
 }
 
 }  // namespace

@@ -121,13 +121,16 @@ void reportSoundSpeed(const SoundSpeedConfig& c, const SoundSpeedResults& r, Rep
   for (int k = 0; k < kTheories; ++k) {
     const TheorySeries& t = r.theories[k];
     verdict.rows.push_back({kTheoryNames[k], std::to_string(t.tested), std::to_string(t.holds)});
-    summary += fmt::format("{}: holds for {} of {} fronts. ", kTheoryNames[k], t.holds, t.tested);
+    summary +=
+        fmt::format("- {}: holds for {} of {} fronts.\n", kTheoryNames[k], t.holds, t.tested);
   }
   s.add(std::move(verdict));
   s.add(measuredAgainstPredicted(r));
   s.add(comparisonTable(r));
   s.add(statesTable(r));
-  report.summary = summary;
+  report.summary = summary +
+                   "- What decides: a theory holds for a front when its prediction lies within 2 "
+                   "combined sigma of the measured front speed w.\n";
 }
 
 }  // namespace granwave

@@ -348,6 +348,8 @@ std::string continuumAgreement(const StabilityConfig& c, const StabilityResults&
       name, same, compared, splits, split_same);
 }
 
+// The headline, one answer per line: the grid, then the dry-wet differences per frequency,
+// with the state by each solid criterion, then in the period.
 std::string summary(const StabilityConfig& c, const StabilityResults& r) {
   std::string per_f, period_per_f, within_per_f;
   for (std::size_t i = 0; i < c.frequencies.size(); ++i) {
@@ -359,11 +361,16 @@ std::string summary(const StabilityConfig& c, const StabilityResults& r) {
         fmt::format("{}{:g} Hz: {:g}", i ? ", " : "", c.frequencies[i], r.period_differences[i]);
   }
   return fmt::format(
-      "{} grid points per law (f = {:g} to {:g} Hz, Gamma = {:g} to {:g}), {} seed(s) each. "
-      "Points where dry and wet differ in state, surface waves or kinks, per frequency: {} "
-      "(state within one cycle: {}); in the period: {}.",
+      "- Grid: {} points per law (f = {:g} to {:g} Hz, Gamma = {:g} to {:g}, so {} Gamma values "
+      "per frequency), {} seed(s) each.\n"
+      "- Points where dry and wet differ in state, surface waves or kinks (the state solid by {}), "
+      "per frequency: {}.\n"
+      "- The same with the state judged {}: {}.\n"
+      "- Points where dry and wet differ in the period, per frequency: {}.\n",
       c.frequencies.size() * c.gammas.size(), c.frequencies.front(), c.frequencies.back(),
-      c.gammas.front(), c.gammas.back(), c.seeds.size(), per_f, within_per_f, period_per_f);
+      c.gammas.front(), c.gammas.back(), c.gammas.size(), c.seeds.size(),
+      criterionName(SolidCriterion::bonds), per_f, criterionName(SolidCriterion::within_cycle),
+      within_per_f, period_per_f);
 }
 
 }  // namespace

@@ -157,12 +157,21 @@ Table everyPoint(const SurfaceWavesConfig& c, const std::vector<SurfaceWaveSumma
 }  // namespace
 
 void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, Report& report) {
+  // Spearman's rho is undefined below 3 variants with an onset or when their ranks tie.
+  const std::string rho = std::isfinite(r.rank_correlation) ? formatNumber(r.rank_correlation, 2)
+                          : r.ranked_variants < 3           ? "undefined (fewer than 3)"
+                                                  : "undefined (the onsets or the e_eff tie)";
   report.summary = fmt::format(
-      "{} runs ({} failed), {:.0f} CPU-s. Width scan: {}. Onset against e_eff: Spearman {} over "
-      "{} variants. r_x with waves {}, without (noise floor) {}.",
-      r.runs.size(), r.failed_runs, r.cpu_seconds, r.width_verdict,
-      formatNumber(r.rank_correlation, 2), r.ranked_variants, format(r.r_x_waves),
-      format(r.r_x_control));
+      "- Runs: {} ({} failed), {:.0f} CPU-s.\n"
+      "- Box modes or Faraday waves (width scan): {}. Decided by the two widest boxes with a "
+      "wave: wavelengths within 2 sigma of each other mean a Faraday wave, a wavelength ratio "
+      "nearer the widths' ratio than 1 a box mode.\n"
+      "- Does the onset follow the layer's dissipation: Spearman rank correlation of Gamma_c "
+      "with e_eff over the {} variants with an onset: {}.\n"
+      "- Deficiency factor r_x = RMS(v_x)_dry / RMS(v_x)_wet (mean ± standard error over "
+      "points): {} with waves in either layer, {} without (the noise floor).\n",
+      r.runs.size(), r.failed_runs, r.cpu_seconds, r.width_verdict, r.ranked_variants, rho,
+      format(r.r_x_waves), format(r.r_x_control));
   report.section("Method", method(c));
   addOnset(c, r, report);
   ReportSection& spectra = report.section(

@@ -5,8 +5,10 @@ Usage: check_report.py REPORT.html
 
 Checks the DOM after scripts ran: every figure image decoded, every table has
 body rows each holding a number (or the reason a run failed), no empty cell or
-figure, at least one <h2>, and no sideways scrolling in a 1280 px wide window;
-and that a screenshot shows something.  A copy of the page with two scripts of
+figure, at least one <h2>, a headline under the title that is a list of answers
+and nothing else (<ul class="answers">: the summary's "- " lines), and no
+sideways scrolling in a 1280 px wide window; and that a screenshot shows
+something.  A copy of the page with two scripts of
 this checker added (PROBE) also fails on: any console error, uncaught exception
 or resource that failed to load; a table wider than its column without a box
 that scrolls sideways, or such a box wider than the page; a cell whose content
@@ -121,6 +123,11 @@ PROBE_BODY = """<script>(function () {
 })();</script>"""
 
 
+# Block elements that may stand between the title and the provenance line: the headline
+# (render_report.py's paragraphs() of the summary) must be lists of answers only.
+HEADLINE_BLOCKS = ("p", "ul", "ol", "div", "table", "h2", "h3", "section", "nav")
+
+
 class ReportDom(HTMLParser):
     """Collects what the checks need from a dumped DOM."""
 
@@ -131,12 +138,21 @@ class ReportDom(HTMLParser):
         self.h2_count = 0
         self.tables = []      # per table: list of (in_thead, [cell texts]) rows
         self.figures = []     # per figure: list of img srcs inside it
+        self.headline = []    # blocks between <h1> and the provenance line: (tag, class)
+        self.answers = 0      # <li> items of the headline
+        self._headline = None  # None before <h1>, True inside the headline, False after it
         self._tables = []     # stack of open tables: [rows, section]
         self._cell = None     # text pieces of the open <td>/<th>
         self._figure = None   # img srcs of the open <figure>
 
     def handle_starttag(self, tag, attrs):
         attrs = dict(attrs)
+        if self._headline and tag == "p" and attrs.get("class") == "provenance":
+            self._headline = False
+        elif self._headline and tag in HEADLINE_BLOCKS:
+            self.headline.append((tag, attrs.get("class") or ""))
+        elif self._headline and tag == "li":
+            self.answers += 1
         if tag == "body":
             self.body_attrs = attrs
         elif tag == "img":
@@ -158,7 +174,9 @@ class ReportDom(HTMLParser):
             self._cell = []
 
     def handle_endtag(self, tag):
-        if tag == "figure":
+        if tag == "h1" and self._headline is None:
+            self._headline = True
+        elif tag == "figure":
             self._figure = None
         elif tag == "table" and self._tables:
             self.tables.append(self._tables.pop()[0])
@@ -236,7 +254,18 @@ def check_dom(dom):
             failures.append(f"figure {f} has no image")
     if dom.h2_count < 1:
         failures.append("the page has no <h2> section heading")
+    failures += check_headline(dom)
     return failures + check_probe(dom)
+
+
+def check_headline(dom):
+    """The summary under the title is a list of answers, one per line ("- " lines)."""
+    others = [f"<{tag}>" for tag, cls in dom.headline if (tag, cls) != ("ul", "answers")]
+    if others:
+        return [f"the headline is not only a list of answers: it has {', '.join(others)}"]
+    if dom.answers < 1:
+        return ["the page has no list of answers under its title"]
+    return []
 
 
 def check_probe(dom):

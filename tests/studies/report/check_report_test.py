@@ -7,6 +7,7 @@ than the cell (run by ctest: studies_report_check_fails_broken_pages; skipped, c
 without chromium)."""
 import importlib.util
 import os
+import re
 import shutil
 import sys
 import tempfile
@@ -115,6 +116,21 @@ class CheckReport(unittest.TestCase):
         found = self.failures(page)
         self.assertRegex(found, r"table 1 is \d+ px wide in a \d+ px column without a box")
         self.assertIn("it scrolls sideways", found)
+
+    def test_a_headline_in_one_paragraph_fails(self):
+        self.assertIn('<ul class="answers">', self.page)
+        page = re.sub(r'<ul class="answers">.*?</ul>', "<p>Wet layer: 1.72. Dry layer: none.</p>",
+                      self.page, count=1, flags=re.S)
+        self.assertIn("the headline is not only a list of answers: it has <p>", self.failures(page))
+
+    def test_a_paragraph_beside_the_answers_fails(self):
+        page = self.broken("</ul>", "</ul>\n<p>Seeds 1-3.</p>")
+        self.assertIn("the headline is not only a list of answers: it has <p>", self.failures(page))
+
+    def test_a_page_without_a_headline_fails(self):
+        self.assertIn('<ul class="answers">', self.page)
+        page = re.sub(r'<ul class="answers">.*?</ul>', "", self.page, count=1, flags=re.S)
+        self.assertIn("the page has no list of answers under its title", self.failures(page))
 
     def test_a_cell_content_wider_than_its_cell_fails(self):
         page = self.broken("th,td{", "td{max-width:5em;overflow:hidden}th,td{")
