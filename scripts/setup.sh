@@ -13,7 +13,7 @@ program_only=0
 
 # The program: compilers, the libraries it links, OpenMPI (studies over MPI ranks), git (the
 # source commit in every output's provenance) and what the study report is drawn with.
-packages=(build-essential cmake pkg-config git
+packages=(build-essential cmake ninja-build pkg-config git
           libeigen3-dev libsundials-dev libfftw3-dev libhdf5-dev
           libcli11-dev libtomlplusplus-dev libfmt-dev libopenmpi-dev openmpi-bin
           python3-matplotlib python3-h5py python3-numpy)
@@ -58,6 +58,10 @@ if [ "$sanitize" = 1 ]; then
   fi
   options+=(-DCMAKE_C_COMPILER=clang-14 -DCMAKE_CXX_COMPILER=clang++-14)
 fi
+# A new tree is generated for Ninja, which starts a file as soon as its own inputs are ready
+# (Make waits for every library a target links before compiling the target's files, and
+# leaves a core idle at each such step); a tree made earlier keeps its generator.
+[ -f "$build/CMakeCache.txt" ] || options+=(-G Ninja)
 cmake -S . -B "$build" "${options[@]}" >&2
 if ((program_only)); then
   cmake --build "$build" -j"$(nproc)" --target granwave >&2
