@@ -51,7 +51,9 @@ class CliTest : public ::testing::Test {
   std::string read(const std::string& name) const { return slurp(dir_ / name); }
   bool exists(const std::string& name) const { return std::filesystem::exists(dir_ / name); }
   // `prefix` runs before the program in the same shell (ulimit, setpriv); `timeout` turns a
-  // command that would block into a failure, not a hang.
+  // command that would block (a FIFO input) into a failure, not a hang. Standard output goes
+  // to `out`: out.txt is read back into CliResult::out; another path (/dev/full, to test a
+  // full output stream) leaves it empty.
   CliResult run(const std::string& args, const std::string& prefix = "",
                 const std::string& out = "out.txt") const {
     const std::string cmd = "cd '" + dir_.string() + "' && " + prefix + " timeout 120 '" +

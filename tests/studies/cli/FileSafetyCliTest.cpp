@@ -6,76 +6,25 @@
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <sys/sysmacros.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 
 #include "AddressSanitizer.hpp"
+#include "tests/studies/cli/CliTestSupport.hpp"
 
 namespace fs = std::filesystem;
+using granwave::testing::CliResult;
+using granwave::testing::kShortDryScene;
 
 namespace {
 
-struct Result {
-  int code;
-  std::string out, err;
-};
-
-const char* kShortDry = "[contact]\nrestitution = \"dry\"\n[run]\nduration = 0.3\n";
-
-class FileSafetyCli : public ::testing::Test {
+class FileSafetyCli : public granwave::testing::CliTest {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("granwave_files_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    write("s.toml", kShortDry);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  void write(const std::string& name, const std::string& text) {
-    std::ofstream(dir_ / name) << text;
-  }
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  }
-  // `timeout` turns a command that would block (a FIFO input) into a failure, not a hang.
-  Result run(const std::string& args, const std::string& prefix = "") {
-    const std::string cmd = "cd '" + dir_.string() + "' && " + prefix + " timeout 60 '" +
-                            GRANWAVE_BINARY + "' " + args + " > out.txt 2> err.txt";
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(dir_ / "out.txt"),
-            slurp(dir_ / "err.txt")};
-  }
-  // Exit 2 (or `code`), one line naming `mention`, nothing on stdout.
-  static void expectRefusal(const Result& r, const std::string& mention, int code = 2) {
-    EXPECT_EQ(r.code, code) << r.err;
-    EXPECT_NE(r.err.find(mention), std::string::npos) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_EQ(r.out, "");
-  }
-  // Files the command left besides the test's own (scenes, out.txt, err.txt, `keep`).
-  int stray(const std::string& keep = "") const {
-    int n = 0;
-    for (const auto& e : fs::directory_iterator(dir_)) {
-      const std::string f = e.path().filename().string();
-      n += !(f == "out.txt" || f == "err.txt" || f.ends_with(".toml") || f == keep);
-    }
-    return n;
-  }
-  bool makeRunFile() { return run("simulate -q s.toml -o run.h5").code == 0; }
-  fs::path dir_;
+  bool makeRunFile() const { return run("simulate -q s.toml -o run.h5").code == 0; }
 };
 
 }  // namespace
@@ -102,7 +51,7 @@ TEST_F(FileSafetyCli, DirectoryOutputIsRefusedBeforeAnyWorkAndNothingGoesIntoIt)
 
 TEST_F(FileSafetyCli, OutputOverTheSceneOrAnotherOutputIsRefusedBeforeTheRun) {
   expectRefusal(run("simulate -q s.toml -o s.toml"), "would overwrite the scene");
-  EXPECT_EQ(slurp(dir_ / "s.toml"), kShortDry);
+  EXPECT_EQ(slurp(dir_ / "s.toml"), kShortDryScene);
   expectRefusal(run("simulate -q s.toml -o r.h5 --fields r.h5"), "would be the same file");
   expectRefusal(run("simulate -q s.toml -o r.h5 --fields ./r.h5"), "would be the same file");
   expectRefusal(run("simulate -q s.toml -o r.h5 --fields f.xdmf"), "fields sidecar");
@@ -126,7 +75,7 @@ TEST_F(FileSafetyCli, FieldsAndExportRefuseToOverwriteTheirRunFile) {
 
 TEST_F(FileSafetyCli, FailedFieldsStepLeavesNeitherTheFieldsNorTheRunFile) {
   // 0.3 s (3 cycles) holds no steady cycle to average: the fields analysis fails at the end.
-  const Result r = run("simulate -q s.toml -o r.h5 --fields f.h5");
+  const CliResult r = run("simulate -q s.toml -o r.h5 --fields f.h5");
   EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_NE(r.err.find("no steady cycles"), std::string::npos) << r.err;
   EXPECT_EQ(stray(), 0) << "the run file of a failed --fields run was left";
@@ -165,7 +114,7 @@ TEST_F(FileSafetyCli, NanOptionsAreRefused) {
 
 TEST_F(FileSafetyCli, ControlCharactersInAnErrorAreEscapedToKeepItOneLine) {
   // A key with a newline and an escape sequence in it, as a careless script might pass.
-  const Result bad = run("simulate -q s.toml --set \"$(printf 'drive.gam\\nma\\033[2J=4')\"");
+  const CliResult bad = run("simulate -q s.toml --set \"$(printf 'drive.gam\\nma\\033[2J=4')\"");
   EXPECT_EQ(bad.code, 2) << bad.err;
   EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
   EXPECT_NE(bad.err.find("gam\\nma\\x1b[2J"), std::string::npos) << bad.err;
@@ -196,7 +145,7 @@ TEST_F(FileSafetyCli, OutOfMemoryHasItsOwnExitCodeAndMessage) {
   // 120 MB of address space is too little for a million grains (their state, event queue
   // and cell lists; the largest scene the ranges allow needs about 250 MB): the allocation
   // fails as it would on a small machine.
-  const Result r =
+  const CliResult r =
       run("simulate -q s.toml --no-output --set particles.count=1000000 --set "
           "container.width=6 --set container.height=6 --set run.duration=0.001",
           "ulimit -v 120000;");
