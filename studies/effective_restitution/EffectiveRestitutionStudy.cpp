@@ -68,7 +68,7 @@ void EffectiveRestitutionStudy::addCoolingRuns(const StudyFile& f, int law) {
           fmt::format("run.record_interval={}", formatCompact(c_.cooling_record)),
           fmt::format("run.duration={}", formatCompact(c_.cooling_duration)),
           fmt::format("run.seed={}", c_.seeds.front())};
-      if (!rough) o.push_back("contact.friction=0");
+      if (!rough) o.emplace_back("contact.friction=0");
       RunRequest q =
           runRequest(RunKind::Particles, EffectiveRestitutionConfig::coolingLabel(law, nu, rough),
                      c_.scenes.scene(f, law, o));

@@ -69,7 +69,7 @@ void writeTable(h5::File& f, const std::string& g, const Table& t) {
   f.writeStringArrayAttribute(g, "columns", t.columns);
   std::vector<std::string> cells;
   if (t.rows.empty()) {  // every run failed, or nothing was found: say so in the table
-    cells.push_back("none: the runs failed or gave nothing to tabulate");
+    cells.emplace_back("none: the runs failed or gave nothing to tabulate");
     for (std::size_t c = 1; c < t.columns.size(); ++c) cells.push_back("–");
   }
   for (const auto& row : t.rows) {

@@ -129,7 +129,7 @@ FollowUp StabilityStudy::followUp(const RunSet& runs) const {
 
 void StabilityStudy::addHydro(StudyFile& f, int law, double fr, double gamma,
                               std::vector<std::string> o, bool rough) {
-  if (rough) o.push_back("hydro.particles=\"rough\"");
+  if (rough) o.emplace_back("hydro.particles=\"rough\"");
   RunRequest q = runRequest(RunKind::Hydro, StabilityConfig::hydroRun(law, fr, gamma, rough),
                             c_.scenes.scene(f, law, o));
   q.failure_note = "failure is a result (the continuum's stability map)";
