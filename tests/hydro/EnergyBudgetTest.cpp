@@ -18,16 +18,6 @@ namespace {
 using test::kD;
 using test::kMass;
 
-HydroGeometry paperGeometry(int cells) {
-  HydroGeometry g;
-  g.cells = cells;
-  g.height = 30 * kD;
-  g.omega = 2 * std::numbers::pi * 10;
-  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
-  g.ramp_time = 0.2;
-  return g;
-}
-
 // dE/dt along the flow by central differences in time: E(t + h, U + h R) - E(t - h, U - h R).
 double energyDerivative(const GranularHydro1D& pde, double t, const std::vector<double>& U) {
   std::vector<double> R(U.size()), up(U.size()), down(U.size());
@@ -41,7 +31,7 @@ double energyDerivative(const GranularHydro1D& pde, double t, const std::vector<
 }
 
 void expectRatesAreTheEnergysDerivative(const ConstitutiveModel& m) {
-  const GranularHydro1D pde(paperGeometry(40), m, 300 * kMass / (30 * kD));
+  const GranularHydro1D pde(test::paperGeometry(40), m, 300 * kMass / (30 * kD));
   CvodeIntegrator cv = test::integrator(pde, spreadLayer(pde, 1e-3 * 9.81 * kD), 1e-6);
   int checked = 0;
   for (double t = 0.05; t < 0.5; t += 0.011) {  // landing, rest, lift-off and flight
@@ -81,7 +71,7 @@ TEST(EnergyBudget, PhaseBudgetsCloseToTheIntegrationTolerance) {
   // throughput.
   const ConstitutiveModel m =
       test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
-  const GranularHydro1D pde(paperGeometry(60), m, 300 * kMass / (30 * kD), {}, true);
+  const GranularHydro1D pde(test::paperGeometry(60), m, 300 * kMass / (30 * kD), {}, true);
   HydroRunOptions o;
   o.cvode.rtol = 1e-6;
   o.samples_per_cycle = 100;

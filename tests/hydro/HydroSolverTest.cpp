@@ -117,12 +117,7 @@ TEST(HydroSolver, EnergyBudgetOfADrivenLayerClosesExactly) {
   // collisional cooling, d/dt E = -g_eff sum m_j u_j - sum D_c l_i, with the contact
   // pressure's elastic energy changing at -sum p_c du_i. An identity of the operator (1e-9).
   ConstitutiveModel m = test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
-  HydroGeometry g;
-  g.cells = 40;
-  g.height = 30 * kD;
-  g.omega = 2 * std::numbers::pi * 10;
-  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
-  g.ramp_time = 0.2;
+  const HydroGeometry g = test::paperGeometry(40);
   const GranularHydro1D pde(g, m, 300 * kMass / (30 * kD));
   CvodeIntegrator cv = test::integrator(pde, settledLayer(pde, 1e-3 * 9.81 * kD), 1e-6);
   // Find a moment of flight: the bottom node clear of the plate, the top clear of the lid.
@@ -162,13 +157,7 @@ TEST(HydroSolver, EnergyBudgetOfADrivenLayerClosesExactly) {
 // cycles of the driven layer show it (as `granwave hydro` runs them: 20 cells, dry beads).
 TEST(HydroSolver, FinePhaseResolutionRunsWithinTheStepBudget) {
   ConstitutiveModel m = test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
-  HydroGeometry g;
-  g.cells = 20;
-  g.height = 30 * kD;
-  g.omega = 2 * std::numbers::pi * 10;
-  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
-  g.ramp_time = 0.1;
-  const GranularHydro1D pde(g, m, 300 * kMass / (30 * kD));
+  const GranularHydro1D pde(test::paperGeometry(20), m, 300 * kMass / (30 * kD));
   HydroRunOptions o;
   o.samples_per_cycle = 6000;
   o.max_cycles = 2;

@@ -28,6 +28,18 @@ inline ConstitutiveModel beadModel(RestitutionClosure pairs, RestitutionClosure 
   return m;
 }
 
+// The paper's container and drive: a 30 d tall box shaken at 10 Hz and Gamma = 4, the drive
+// ramped up over its first 0.2 s, in `cells` cells.
+inline HydroGeometry paperGeometry(int cells) {
+  HydroGeometry g;
+  g.cells = cells;
+  g.height = 30 * kD;
+  g.omega = 2 * std::numbers::pi * 10;
+  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
+  g.ramp_time = 0.2;
+  return g;
+}
+
 inline double densityOf(double nu) { return nu * kMass / kDisk; }
 
 // A gas at rest at area fraction nu and temperature theta filling a closed box of `cells`
