@@ -15,10 +15,10 @@ the sanitizer build (clang 14, precompiled headers libclang reads) and then the 
 cannot parse without errors is an offender: its functions would go uncounted. A function's
 length is the lines from its name to its closing brace; its nesting is the deepest chain of
 if / for / while / do / switch / try / lambda inside it (an `else if` continues its `if` and
-does not nest). Functions defined in headers are counted
-once. Exits 1 and lists the offenders if a limit is exceeded; --report lists the largest
-figures per folder whatever the limits; --only limits the check to files under the given
-folders (e.g. --only studies tests/studies), which .ci/run uses for the folders that meet it.
+does not nest). Functions defined in headers are counted once. Exits 1 and lists the
+offenders if a limit is exceeded; --report lists the largest figures per folder whatever the
+limits; --only limits the check to files under the given folders (e.g. --only studies
+tests/studies).
 """
 import argparse
 import json
@@ -110,8 +110,7 @@ def functions_of(entry):
     FUNCTION_KINDS = {K.FUNCTION_DECL, K.CXX_METHOD, K.CONSTRUCTOR, K.DESTRUCTOR,
                       K.FUNCTION_TEMPLATE, K.CONVERSION_FUNCTION}
     os.chdir(entry["directory"])
-    tu = ci.Index.create().parse(entry["file"], args=arguments(entry),
-                                 options=ci.TranslationUnit.PARSE_SKIP_FUNCTION_BODIES * 0)
+    tu = ci.Index.create().parse(entry["file"], args=arguments(entry))
     found = []
     errors = [d for d in tu.diagnostics if d.severity >= ci.Diagnostic.Error]
     if errors:
