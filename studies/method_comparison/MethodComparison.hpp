@@ -73,6 +73,9 @@ struct ModelCandidate {
   ShareDifference share_gap;  // share - the reference's, with its 95 % interval
   double sigma = NAN;         // front speed - the reference's, in combined sigma
   Match match = Match::no;
+  // What the answer cost: particles, CPU-s per drive cycle (mean over the seeds' runs); hydro,
+  // CPU-s of the whole run (the start to the periodic state).
+  double cpu_per_cycle = NAN, run_cpu = NAN;
 };
 
 // How stable a verdict is against the choice of seeds (docs/studies.md, "Verdict
@@ -96,6 +99,7 @@ struct ModelHierarchy {
   std::string reference_periods;
   int reference_period = 0;
   StateShare reference_share;
+  double reference_cpu_per_cycle = NAN;  // CPU-s per drive cycle, mean over the seeds' runs
   std::vector<ModelCandidate> candidates;
   std::string simplest;    // empty: none reproduces the particles (or undecided)
   bool undecided = false;  // a candidate before `simplest` (or any, if none) is not_yet
@@ -115,6 +119,7 @@ struct SeedRun {
   int period = 0;
   int windows = 0, period2_windows = 0;
   double effective_windows = 0;
+  double cpu_per_cycle = NAN;  // CPU-s per drive cycle of the run
 };
 
 // What the model hierarchy is judged from, read once: per particle model tag ("", "constant

@@ -27,6 +27,7 @@ struct OverSeeds {
   std::string periods;
   int mode = 0;
   StateShare share;
+  double cpu_per_cycle = NAN;  // mean over the picked seeds' runs
 };
 
 OverSeeds overSeeds(const ModelInputs& in, const std::string& tag, const std::vector<int>& pick) {
@@ -35,6 +36,7 @@ OverSeeds overSeeds(const ModelInputs& in, const std::string& tag, const std::ve
   std::map<int, int> count;
   int windows = 0, period2 = 0;
   double effective = 0;
+  std::vector<double> cpu;
   for (int i : pick) {
     const SeedRun& r = in.particles.at(tag)[static_cast<std::size_t>(i)];
     if (!r.ok) continue;
@@ -44,7 +46,9 @@ OverSeeds overSeeds(const ModelInputs& in, const std::string& tag, const std::ve
     windows += r.windows;
     period2 += r.period2_windows;
     effective += r.effective_windows;
+    cpu.push_back(r.cpu_per_cycle);
   }
+  out.cpu_per_cycle = meanAndStandardError(cpu).value;
   out.speed = combine(fronts);
   int best = 0;
   for (auto [period, n] : count)
@@ -161,7 +165,8 @@ ModelInputs readModelInputs(const MethodComparisonConfig& c, const RunSet& runs,
              p->context.layer_period,
              static_cast<int>(st.f2_strength.size()),
              period2Windows(st),
-             st.effective_windows};
+             st.effective_windows,
+             runs.get(label).cpu / (c.duration * c.scenes.base[law].drive.frequency)};
       }
       in.particles[tag].push_back(r);
     }
@@ -184,6 +189,7 @@ ModelHierarchy judgeModels(const MethodComparisonConfig& c, const ModelInputs& i
   m.reference_periods = ref.periods;
   m.reference_period = ref.mode;
   m.reference_share = ref.share;
+  m.reference_cpu_per_cycle = ref.cpu_per_cycle;
   for (const CandidateSpec& cand : candidateSpecs(c, law)) {
     ModelCandidate mc;
     mc.description = cand.description;
@@ -193,6 +199,7 @@ ModelHierarchy judgeModels(const MethodComparisonConfig& c, const ModelInputs& i
       const HydroOutcome& h = in.hydro.at(cand.label);
       mc.failed = !h.fields;
       mc.failure = "failed: " + shortReason(h.failure);
+      mc.run_cpu = h.cpu;
       if (h.fields) {
         mc.speed = h.tracked;
         const int period = h.fields->periodic ? static_cast<int>(h.fields->period) : 0;
@@ -204,6 +211,7 @@ ModelHierarchy judgeModels(const MethodComparisonConfig& c, const ModelInputs& i
       mc.speed = o.speed;
       mc.periods = o.periods;
       mc.share = o.share;
+      mc.cpu_per_cycle = o.cpu_per_cycle;
       mc.failed = mc.periods.empty();
       mc.failure = "failed: every seed";
     }

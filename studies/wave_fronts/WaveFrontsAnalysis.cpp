@@ -63,6 +63,7 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
   if (s.hydro_ok) {
     s.hydro = h.fronts.all;
     s.hydro_cpu = h.fields->cpu_seconds;
+    s.hydro_period = h.fields->periodic ? static_cast<int>(h.fields->period) : 0;
   }
   return s;
 }
@@ -75,7 +76,9 @@ void trackSweepPoint(const WaveFrontsConfig& c, const RunSet& runs, int law, int
     const auto p =
         particleFields(runs, WaveFrontsConfig::particleRun(
                                  law, WaveFrontsConfig::countTag(n, sd, c.sweep_seeds.front())));
-    if (p) seeds.push_back(velocityFronts(*p));
+    if (!p) continue;
+    seeds.push_back(velocityFronts(*p));
+    s.seed_periods.push_back(p->context.layer_period);
   }
   s.tracked_seeds = static_cast<int>(seeds.size());
   s.tracked = combineVelocityFronts(seeds);
@@ -234,6 +237,7 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
   for (int law = 0; law < kLaws; ++law) r.models[law] = analyseModels(c, runs, law);
   for (int law = 0; law < kLaws; ++law) r.states[law] = analyseStates(c, runs, law);
   if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0].seed1, r.paper[0].hydro[0]);
+  r.cheapest = cheapestModels(c, r);
   return r;
 }
 
@@ -246,6 +250,7 @@ void writeWaveFrontsResults(h5::File& f, const WaveFrontsConfig& c, const WaveFr
   for (int law = 0; law < kLaws; ++law) writeModels(f, kRoot, law, r.models[law]);
   for (int law = 0; law < kLaws; ++law) writeStates(f, kRoot, law, r.states[law]);
   if (r.lammps) writeLammps(f, kRoot, *r.lammps);
+  writeCheapestModels(f, kRoot, r.cheapest);
 }
 
 }  // namespace granwave

@@ -14,6 +14,7 @@
 #include "studies/statistics/Measurement.hpp"
 #include "studies/wave_analysis/ImpactFronts.hpp"
 #include "studies/wave_analysis/VelocityFronts.hpp"
+#include "studies/wave_fronts/CheapestModel.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -48,9 +49,12 @@ struct SweepPoint {
   std::string hydro_failure;
   double ed_cpu_per_cycle = NAN;  // CPU-s per drive cycle of the particle run
   double hydro_cpu = NAN;         // CPU-s of the hydro run, settled layer to periodic state
-  // N sweep: the velocity-jump tracker over the sweep's seeds and on the hydro run.
+  // N sweep: the velocity-jump tracker over the sweep's seeds and on the hydro run, and the
+  // layer's period of each seed's run and of the hydro run (0: not periodic or failed).
   VelocityFronts tracked, hydro_tracked;
   int tracked_seeds = 0;
+  std::vector<int> seed_periods;
+  int hydro_period = 0;
 };
 
 struct ParameterSweep {
@@ -88,6 +92,7 @@ struct WaveFrontsResults {
   ModelHierarchy models[2];
   StateShares states[2];
   std::optional<LammpsComparison> lammps;
+  std::vector<SceneCost> cheapest;  // per scene: the paper's dry and wet, then the N sweep
 };
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& config, const RunSet& runs);

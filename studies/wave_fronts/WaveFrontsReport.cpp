@@ -273,7 +273,9 @@ void reportWaveFronts(const WaveFrontsConfig& c, const WaveFrontsResults& r, Rep
   costSection(c, r.cost, report);
   failureSection(c, r.failures, report);
   stateSection(r, report);
-  summarise(r, modelSection(c, r.models, report), report);
+  std::vector<std::string> verdicts = modelSection(c, r.models, report);
+  verdicts.push_back(cheapestModelSection(c, r, report));
+  summarise(r, verdicts, report);
   if (r.lammps) lammpsSection(c, *r.lammps, r.paper[0].seed1, r.paper[0].hydro[0], report);
 }
 

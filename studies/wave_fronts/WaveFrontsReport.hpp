@@ -1,9 +1,11 @@
 #pragma once
 // The wave-fronts study's report, section by section (docs/studies.md): the paper's scene,
 // temperature profiles and space-time plots (this file's .cpp), the N and wet-law sweeps
-// (WaveFrontsSweepsReport.cpp), the layer's states (WaveFrontsStatesReport.cpp), and the methods
-// comparison's sections (studies/method_comparison/MethodComparisonReport.hpp). Figures, tables and
-// prose only.
+// (WaveFrontsSweepsReport.cpp), the layer's states (WaveFrontsStatesReport.cpp), the cheapest
+// model per scene (CheapestModelReport.cpp), and the methods comparison's sections
+// (studies/method_comparison/MethodComparisonReport.hpp). Figures, tables and prose only.
+#include <string>
+
 #include "studies/method_comparison/MethodComparisonReport.hpp"
 #include "studies/report/Report.hpp"
 #include "studies/wave_fronts/WaveFrontsAnalysis.hpp"
@@ -18,5 +20,8 @@ void depthSection(const WaveFrontsConfig& config, const WaveFrontsResults& resul
 void wetLawSection(const WaveFrontsResults& results, Report& report);
 // The layer's state: shares of seeds and time in the period-2 state, state-conditioned fronts.
 void stateSection(const WaveFrontsResults& results, Report& report);
+// Cost per answer at equal accuracy and the cheapest model per scene; returns its headline line.
+std::string cheapestModelSection(const WaveFrontsConfig& config, const WaveFrontsResults& results,
+                                 Report& report);
 
 }  // namespace granwave

@@ -10,8 +10,10 @@
 // 0.5 T0 for more than a phase or two, so it has no front to test; docs/hydro.md.)
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "tests/studies/contract/TinyStudy.hpp"
 
@@ -60,6 +62,42 @@ TEST_F(WaveFrontsResults, WithOneSeedAndNoRoomForMoreTheVerdictRestsOnThatSeedAl
     EXPECT_DOUBLE_EQ(study().value(g, "verdict_seeds"), 1.0) << law;
     EXPECT_DOUBLE_EQ(study().value(g, "front_tolerance"), 0.15) << law;
   }
+}
+
+}  // namespace
+
+namespace {
+
+std::vector<std::string> splitList(const std::string& text) {  // "a; b; c" -> {a, b, c}
+  std::vector<std::string> out;
+  for (std::size_t from = 0;;) {
+    const std::size_t to = text.find("; ", from);
+    out.push_back(text.substr(from, to - from));
+    if (to == std::string::npos) return out;
+    from = to + 2;
+  }
+}
+
+// Cost per answer at equal accuracy (docs/studies.md): one scene per law on the paper's scene
+// and per law and count of the N sweep (one count in the tiny study), each naming as its
+// cheapest model one that its own verdicts say reproduces the particles, with a CPU time.
+TEST_F(WaveFrontsResults, EveryScenesCheapestModelIsOneThatReproducesTheParticles) {
+  const std::string root = kRoot + "/cost/cheapest/scene_";
+  const granwave::h5::File& f = study().file();
+  for (int k = 0; k < 4; ++k) {
+    const std::string g = root + std::to_string(k);
+    const auto models = splitList(f.readStringAttribute(g, "models"));
+    const auto reproduces = splitList(f.readStringAttribute(g, "reproduces"));
+    const auto cpu = study().series(g + "/cpu_seconds_per_answer");
+    ASSERT_EQ(models.size(), reproduces.size()) << g;
+    ASSERT_EQ(models.size(), cpu.size()) << g;
+    const auto at = std::find(models.begin(), models.end(), f.readStringAttribute(g, "cheapest"));
+    ASSERT_NE(at, models.end()) << g;
+    const auto i = static_cast<std::size_t>(at - models.begin());
+    EXPECT_EQ(reproduces[i], "yes") << g << ": " << *at;
+    EXPECT_GT(cpu[i], 0) << g << ": " << *at;
+  }
+  EXPECT_FALSE(f.exists(root + "4")) << "the tiny study has 4 scenes";
 }
 
 }  // namespace
