@@ -81,6 +81,10 @@ struct StateShares {
   int state_windows[2] = {0, 0};  // windows pooled into each state's fields
   Measurement r_x[2];
   int r_x_seeds[2] = {0, 0};
+  // The period-2 state's two impacts, weak and strong, from its windows aligned on their
+  // strong impact (StatePhaseAverager): the whole run's 2-cycle average mixes episodes of both
+  // parities, the state's does not. Combined over the seeds with such fields.
+  Measurement period2_weak, period2_strong;
 };
 
 struct WaveFrontsResults {

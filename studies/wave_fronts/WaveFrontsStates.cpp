@@ -41,6 +41,7 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
   StateShares s;
   std::vector<Measurement> fronts[2];  // velocity-jump fronts (VelocityFronts.hpp)
   std::vector<Measurement> ratios[2];
+  std::vector<Measurement> weak, strong;  // the period-2 state's impacts
   for (int sd : seedsOf(c, runs, law)) {
     const RunRecord& r = runs.get(WaveFrontsConfig::particleRun(law, fmt::format("seed {}", sd)));
     if (!r.ok) continue;
@@ -53,7 +54,10 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
     for (int k = 0; k < 2; ++k) {
       const auto state = readStateFields(r.fieldsPath(), k + 1);
       if (!state) continue;
-      fronts[k].push_back(velocityFronts(*state).speed);
+      const VelocityFronts v = velocityFronts(*state);
+      fronts[k].push_back(v.speed);
+      if (k == 1) weak.push_back(v.weak);
+      if (k == 1) strong.push_back(v.strong);
       if (!dry) continue;
       const Measurement ratio = waveMomentumRatio(*dry, *state, {});
       if (ratio.valid()) ratios[k].push_back(ratio);
@@ -68,6 +72,8 @@ StateShares analyseStates(const WaveFrontsConfig& c, const RunSet& runs, int law
   s.time_share = time.share;
   s.time_low = time.low;
   s.time_high = time.high;
+  s.period2_weak = combine(weak);
+  s.period2_strong = combine(strong);
   for (int k = 0; k < 2; ++k) {
     s.front[k] = combine(fronts[k]);
     s.front_seeds[k] = static_cast<int>(fronts[k].size());
@@ -100,6 +106,8 @@ void writeStates(h5::File& f, const std::string& root, int law, const StateShare
     if (law == 1) putMeasurement(f, g, p + "_r_x", s.r_x[k]);
     if (law == 1) putValue(f, g, p + "_r_x_seeds", s.r_x_seeds[k]);
   }
+  putMeasurement(f, g, "period2_weak_front", s.period2_weak);
+  putMeasurement(f, g, "period2_strong_front", s.period2_strong);
 }
 
 }  // namespace granwave
