@@ -71,28 +71,6 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
   return p;
 }
 
-PhaseBudget HydroSimulation::advanceWithBudget(CvodeIntegrator& cv, double t) const {
-  PhaseBudget b;
-  if (!pde_.hasEnergyBudget()) {
-    cv.advanceTo(t);
-    return b;
-  }
-  const double t0 = cv.time();
-  const std::vector<double> before = cv.state();
-  cv.advanceTo(t);
-  const std::vector<double>& after = cv.state();
-  double crossed[GranularHydro1D::kBudgetTerms];
-  for (int k = 0; k < GranularHydro1D::kBudgetTerms; ++k)
-    crossed[k] = after[pde_.budgetIndex(k)] - before[pde_.budgetIndex(k)];
-  b.plate_work = crossed[0];
-  b.collisional_loss = crossed[1];
-  b.friction_loss = crossed[2];
-  b.wall_loss = crossed[3];
-  b.side_wall_loss = crossed[4];
-  b.energy_change = pde_.labEnergy(t, after.data()) - pde_.labEnergy(t0, before.data());
-  return b;
-}
-
 CvodeOptions HydroSimulation::solverOptions() const {
   const HydroGeometry& g = pde_.geometry();
   const double sigma = pde_.model().sigma;
@@ -179,7 +157,7 @@ HydroResult HydroSimulation::run() {
       const double t = (cycle + static_cast<double>(k) / M) * T;
       PhaseBudget budget;
       try {
-        budget = advanceWithBudget(cv, t);
+        budget = advanceWithBudget(pde_, cv, t);
       } catch (const CvodeError& e) {
         throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle + 1) + ")",
                            e.time(), cycle + 1);

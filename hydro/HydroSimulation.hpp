@@ -57,6 +57,30 @@ struct PhaseBudget {
   }
 };
 
+// Advances cv to t; when the operator carries its energy-budget quadratures, returns what
+// crossed each over the interval and the change of the lab-frame energy. One definition for
+// the 1D and the 2D operator, whose budget terms come in PhaseBudget's order (plate work,
+// collisional, friction, wall, side-wall loss).
+template <class Operator>
+PhaseBudget advanceWithBudget(const Operator& op, CvodeIntegrator& cv, double t) {
+  static_assert(Operator::kBudgetTerms == 5, "the terms of PhaseBudget");
+  PhaseBudget b;
+  if (!op.hasEnergyBudget()) {
+    cv.advanceTo(t);
+    return b;
+  }
+  const double t0 = cv.time();
+  const std::vector<double> before = cv.state();
+  cv.advanceTo(t);
+  const std::vector<double>& after = cv.state();
+  double crossed[Operator::kBudgetTerms];
+  for (int k = 0; k < Operator::kBudgetTerms; ++k)
+    crossed[k] = after[op.budgetIndex(k)] - before[op.budgetIndex(k)];
+  b = {crossed[0], crossed[1], crossed[2], crossed[3], crossed[4], 0};
+  b.energy_change = op.labEnergy(t, after.data()) - op.labEnergy(t0, before.data());
+  return b;
+}
+
 // What the layer does over the final window.
 enum class HydroRegime {
   Fluidised,  // part of the layer dilates below the contact onset during the cycle
@@ -119,7 +143,6 @@ class HydroSimulation {
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
   // Advances to t; with the energy budget, what crossed it since the last output.
-  PhaseBudget advanceWithBudget(CvodeIntegrator& cv, double t) const;
   CvodeOptions solverOptions() const;
   int detectPeriod(const std::vector<double>& com) const;
   long stepBudget() const;

@@ -87,24 +87,6 @@ Hydro2DPhase HydroSimulation2D::snapshot(double t, const std::vector<double>& U)
   return p;
 }
 
-PhaseBudget HydroSimulation2D::advance(CvodeIntegrator& cv, double t) const {
-  PhaseBudget b;
-  if (!op_.hasEnergyBudget()) {
-    cv.advanceTo(t);
-    return b;
-  }
-  const double t0 = cv.time();
-  const std::vector<double> before = cv.state();
-  cv.advanceTo(t);
-  const std::vector<double>& after = cv.state();
-  double crossed[GranularHydro2D::kBudgetTerms];
-  for (int k = 0; k < GranularHydro2D::kBudgetTerms; ++k)
-    crossed[k] = after[op_.budgetIndex(k)] - before[op_.budgetIndex(k)];
-  b = {crossed[0], crossed[1], crossed[2], crossed[3], crossed[4], 0};
-  b.energy_change = op_.labEnergy(t, after.data()) - op_.labEnergy(t0, before.data());
-  return b;
-}
-
 Hydro2DResult HydroSimulation2D::run(const Hydro2DObserver& observe) {
   const double cpu0 = threadCpuSeconds();
   const int M = opt_.samples_per_cycle;
@@ -124,7 +106,7 @@ Hydro2DResult HydroSimulation2D::run(const Hydro2DObserver& observe) {
       const double t = (cycle + static_cast<double>(k) / M) * T;
       PhaseBudget budget;
       try {
-        budget = advance(cv, t);
+        budget = advanceWithBudget(op_, cv, t);
       } catch (const CvodeError& e) {
         throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle + 1) + ")",
                            e.time(), cycle + 1);

@@ -65,7 +65,6 @@ class HydroSimulation2D {
   CvodeOptions solverOptions() const;
 
  private:
-  PhaseBudget advance(CvodeIntegrator& cv, double t) const;
   const GranularHydro2D& op_;
   Hydro2DRunOptions opt_;
 };
