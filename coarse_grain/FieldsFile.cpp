@@ -213,6 +213,8 @@ void writePhaseProfiles(h5::File& f, const std::string& root, const PhaseProfile
   put(f, phases + L::kCenterOfMass, p.pooled.center_of_mass_height, {P}, "m");
   put(f, phases + L::kFrontHeight, p.front_height, {P}, "m");
   put(f, phases + L::kFrontPeak, p.front_peak_temperature, {P}, "1");
+  for (const L::FieldColumn& c : L::kBudgetSeries)
+    if (!(p.pooled.*c.values).empty()) put(f, phases + c.name, p.pooled.*c.values, {P}, c.unit);
   f.createGroup(root + L::kFronts);
   for (const L::FrontColumn& c : L::kFrontColumns) {
     std::vector<double> column;

@@ -9,7 +9,8 @@
 //                                              area_fraction
 //   <root>/blocks/profiles/<profile> [block][phase][z]    the same per block of cycles
 //   <root>/phases/<series> [phase]             time, phase, plate_height, center_of_mass_height,
-//                                              front_height, front_peak_temperature
+//                                              front_height, front_peak_temperature, and
+//                                              (particle runs) kBudgetSeries below
 //   <root>/fronts/<column> [episode]           kFrontColumns below
 //   /states/period{1,2}                        <root> of the fields of each layer state
 //                                              (attributes windows, pooled_cycles); /states has
@@ -90,6 +91,12 @@ inline constexpr const char* kPlateHeight = "plate_height";  // m
 inline constexpr const char* kCenterOfMass = "center_of_mass_height";  // m
 inline constexpr const char* kFrontHeight = "front_height";            // m
 inline constexpr const char* kFrontPeak = "front_peak_temperature";    // T~_g / T0
+// The layer's energy budget per phase interval (PhaseFields), J; particle runs only.
+inline constexpr std::array<FieldColumn, 3> kBudgetSeries{{
+    {"plate_work", "J", &PhaseFields::plate_work},
+    {"pair_loss", "J", &PhaseFields::pair_loss},
+    {"wall_loss", "J", &PhaseFields::wall_loss},
+}};
 
 // A column of the front table: one value per episode, stored as double.
 struct FrontColumn {

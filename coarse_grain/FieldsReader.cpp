@@ -117,6 +117,8 @@ PhaseProfiles readPhaseProfiles(const h5::File& f, const std::string& root) {
   p.pooled.nz = static_cast<int>(p.z.size());
   p.pooled.nx = f.exists(L::kGridX) ? static_cast<int>(f.shape(L::kGridX).at(0)) : 1;
   p.pooled.center_of_mass_height = f.readDataset<double>(phases + L::kCenterOfMass);
+  for (const L::FieldColumn& c : L::kBudgetSeries)  // absent in files written before them
+    if (f.exists(phases + c.name)) p.pooled.*c.values = f.readDataset<double>(phases + c.name);
   const std::size_t n = static_cast<std::size_t>(p.pooled.phases) * p.pooled.nz;
   for (const L::FieldColumn& c : L::kProfileFields) {
     std::vector<double>& v = p.pooled.*c.values;

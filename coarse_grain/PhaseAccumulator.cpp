@@ -15,7 +15,23 @@ PhaseAccumulator::PhaseAccumulator(const FieldGrid& grid, int phases, int blocks
       sums_(static_cast<std::size_t>(blocks) * phases * grid.cells()),
       snapshots_(static_cast<std::size_t>(blocks) * phases, 0.0),
       z_sum_(snapshots_.size(), 0.0),
-      particles_(snapshots_.size(), 0.0) {}
+      particles_(snapshots_.size(), 0.0),
+      budget_(snapshots_.size() * kBudgetTerms, 0.0) {}
+
+void PhaseAccumulator::addBudget(int block, int phase, const double (&crossed)[kBudgetTerms]) {
+  if (budget_lost_) return;
+  const std::size_t at = (static_cast<std::size_t>(block) * phases_ + phase) * kBudgetTerms;
+  for (int k = 0; k < kBudgetTerms; ++k) budget_[at + k] += crossed[k];
+  has_budget_ = true;
+}
+
+double PhaseAccumulator::budget(int block, int phase, int term) const {
+  double sum = 0;
+  for (int b = 0; b < blocks_; ++b)
+    if (block < 0 || b == block)
+      sum += budget_[(static_cast<std::size_t>(b) * phases_ + phase) * kBudgetTerms + term];
+  return sum;
+}
 
 double PhaseAccumulator::centerOfMass(int block, int phase) const {
   double z = 0, n = 0;
@@ -45,8 +61,12 @@ void PhaseAccumulator::mergeBlock(const PhaseAccumulator& from, int from_block, 
     snapshots_[j] += from.snapshots_[i];
     z_sum_[j] += from.z_sum_[i];
     particles_[j] += from.particles_[i];
+    for (int t = 0; t < kBudgetTerms; ++t)
+      budget_[j * kBudgetTerms + t] += from.budget_[i * kBudgetTerms + t];
     for (int c = 0; c < cells; ++c) sums_[j * cells + c].merge(from.sums_[i * cells + c]);
   }
+  has_budget_ = has_budget_ || from.has_budget_;
+  budget_lost_ = budget_lost_ || from.budget_lost_;
 }
 
 void PhaseAccumulator::clear() {
@@ -54,6 +74,8 @@ void PhaseAccumulator::clear() {
   std::fill(snapshots_.begin(), snapshots_.end(), 0.0);
   std::fill(z_sum_.begin(), z_sum_.end(), 0.0);
   std::fill(particles_.begin(), particles_.end(), 0.0);
+  std::fill(budget_.begin(), budget_.end(), 0.0);
+  has_budget_ = budget_lost_ = false;
 }
 
 CellSums PhaseAccumulator::pooled(int phase, int cell) const {
@@ -86,6 +108,9 @@ void PhaseAccumulator::save(h5::File& file, const std::string& group) const {
   file.writeDataset(group + "/snapshots", snapshots_, {snapshots_.size()});
   file.writeDataset(group + "/z_sum", z_sum_, {z_sum_.size()});
   file.writeDataset(group + "/particles", particles_, {particles_.size()});
+  if (budget_lost_) return;  // restored without one: none is written, none can be resumed
+  file.writeDataset(group + "/budget", budget_, {budget_.size()});
+  file.writeAttribute<std::uint64_t>(group + "/budget", "added", has_budget_ ? 1 : 0);
 }
 
 void PhaseAccumulator::restore(const h5::File& file, const std::string& group) {
@@ -97,6 +122,11 @@ void PhaseAccumulator::restore(const h5::File& file, const std::string& group) {
   snapshots_ = file.readDataset<double>(group + "/snapshots", {snapshots_.size()});
   z_sum_ = file.readDataset<double>(group + "/z_sum", {z_sum_.size()});
   particles_ = file.readDataset<double>(group + "/particles", {particles_.size()});
+  // A checkpoint without a budget leaves none: its pooled cycles' share is unknown.
+  budget_lost_ = !file.exists(group + "/budget");
+  has_budget_ = !budget_lost_ && file.readAttribute<std::uint64_t>(group + "/budget", "added") != 0;
+  budget_ = budget_lost_ ? std::vector<double>(budget_.size(), 0.0)
+                         : file.readDataset<double>(group + "/budget", {budget_.size()});
   std::fill(sums_.begin(), sums_.end(), CellSums{});
   for (std::size_t v = 0; v < visited.size(); ++v) {
     if (visited[v] >= sums_.size())

@@ -54,6 +54,17 @@ class PhaseAccumulator {
     particles_[block * phases_ + phase] += particles;
   }
 
+  // The layer's energy budget over the recorded interval that ends at (block, phase): the
+  // work of the moving walls, the energy lost in pair collisions and at the walls (J; the
+  // increments of the engine's cumulative Observables), summed over the pooled snapshots.
+  static constexpr int kBudgetTerms = 3;
+  void addBudget(int block, int phase, const double (&crossed)[kBudgetTerms]);
+  // Whether any budget was added (an accumulator fed without one, or restored from a
+  // checkpoint that had none, has no budget to give).
+  bool hasBudget() const { return has_budget_ && !budget_lost_; }
+  // The sum of `term` at (block, phase); block = -1 pools all blocks.
+  double budget(int block, int phase, int term) const;
+
   const CellSums& at(int block, int phase, int cell) const {
     return sums_[(static_cast<std::size_t>(block) * phases_ + phase) * grid_.cells() + cell];
   }
@@ -78,6 +89,9 @@ class PhaseAccumulator {
   int phases_ = 0, blocks_ = 0;
   std::vector<CellSums> sums_;
   std::vector<double> snapshots_, z_sum_, particles_;
+  std::vector<double> budget_;  // [block][phase][term]
+  bool has_budget_ = false;
+  bool budget_lost_ = false;  // restored from sums without a budget: none can be completed
 };
 
 }  // namespace granwave

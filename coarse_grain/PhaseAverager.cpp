@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <stdexcept>
 #include <string>
 
@@ -50,11 +51,23 @@ void PhaseAverager::observe(const Snapshot& s) {
   cycle_height_sum_ += zsum / std::max(1, s.size());
   ++cycle_samples_;
 
+  // The energy that crossed the layer's budget since the last record (Observables are
+  // cumulative): pooled with this record's phase.
+  const double now[PhaseAccumulator::kBudgetTerms] = {
+      s.obs.wall_work, s.obs.dissipated_energy - s.obs.wall_dissipated_energy,
+      s.obs.wall_dissipated_energy};
+  double crossed[PhaseAccumulator::kBudgetTerms];
+  for (int k = 0; k < PhaseAccumulator::kBudgetTerms; ++k) crossed[k] = now[k] - last_budget_[k];
+  const bool has_interval = has_last_;
+  std::copy(std::begin(now), std::end(now), std::begin(last_budget_));
+  has_last_ = true;
+
   if (start_cycle_ < 0 || cycle < start_cycle_ || cycle >= cfg_.total_cycles) return;
   const int block = std::min(cfg_.blocks - 1, (cycle - start_cycle_) / cycles_per_block_);
   const int wphase = (cycle % cfg_.cycles_per_window) * M + phase;
   if (phase == 0) pooled_cycles_ = cycle - start_cycle_ + 1;
   acc_.countSnapshot(block, wphase, zsum, s.size());
+  if (has_interval) acc_.addBudget(block, wphase, crossed);
   for (int k = 0; k < s.size(); ++k)
     acc_.add(block, wphase, s.x[k], s.z[k], s.vx[k], s.vz[k], s.omega[k]);
 }
@@ -66,6 +79,9 @@ void PhaseAverager::saveState(h5::File& file, const std::string& group) const {
       group, "counters",
       {start_cycle_, cycles_per_block_, pooled_cycles_, current_cycle_, cycle_samples_});
   file.writeAttribute(group, "cycle_height_sum", cycle_height_sum_);
+  if (has_last_)
+    file.writeArrayAttribute<double>(group, "last_budget",
+                                     {last_budget_[0], last_budget_[1], last_budget_[2]});
 }
 
 void PhaseAverager::restoreState(const h5::File& file, const std::string& group) {
@@ -82,6 +98,14 @@ void PhaseAverager::restoreState(const h5::File& file, const std::string& group)
   current_cycle_ = static_cast<int>(c[3]);
   cycle_samples_ = static_cast<int>(c[4]);
   cycle_height_sum_ = file.readAttribute<double>(group, "cycle_height_sum");
+  has_last_ = file.hasAttribute(group, "last_budget");
+  if (has_last_) {
+    const auto last = file.readArrayAttribute<double>(group, "last_budget");
+    if (last.size() != PhaseAccumulator::kBudgetTerms)
+      throw h5::H5Error(file.name() + ": " + group + " last_budget holds " +
+                        std::to_string(last.size()) + " values, expected 3");
+    std::copy(last.begin(), last.end(), std::begin(last_budget_));
+  }
 }
 
 }  // namespace granwave

@@ -46,6 +46,10 @@ class PhaseAverager : public SnapshotObserver, public Checkpointable {
   int current_cycle_ = -1;
   double cycle_height_sum_ = 0;
   int cycle_samples_ = 0;
+  // The cumulative budget of the last record (wall work, pair loss, wall loss; J), whose
+  // increments are pooled; `has_last_` false before the first record.
+  double last_budget_[PhaseAccumulator::kBudgetTerms] = {0, 0, 0};
+  bool has_last_ = false;
 };
 
 }  // namespace granwave

@@ -61,6 +61,15 @@ PhaseFields computeFields(const PhaseAccumulator& acc, const FieldParams& p, int
     }
     f.center_of_mass_height[ph] = acc.centerOfMass(block, ph);
   }
+  if (acc.hasBudget()) {
+    std::vector<double>* terms[PhaseAccumulator::kBudgetTerms] = {&f.plate_work, &f.pair_loss,
+                                                                  &f.wall_loss};
+    for (int t = 0; t < PhaseAccumulator::kBudgetTerms; ++t) {
+      terms[t]->assign(f.phases, kNaN);
+      for (int ph = 0; ph < f.phases; ++ph)
+        if (f.snapshots[ph] > 0) (*terms[t])[ph] = acc.budget(block, ph, t) / f.snapshots[ph];
+    }
+  }
   return f;
 }
 

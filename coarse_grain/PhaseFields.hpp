@@ -32,6 +32,10 @@ struct PhaseFields {
       profile_area_fraction;
   std::vector<double> center_of_mass_height;  // [phase], m
   std::vector<double> snapshots;              // [phase], snapshots pooled
+  // [phase], J: the energy that crossed the layer's budget over the recorded interval ending
+  // at the phase (the moving walls' work, the loss in pair collisions, the loss at the walls),
+  // mean over the pooled windows; empty when not recorded (the continuum keeps its own).
+  std::vector<double> plate_work, pair_loss, wall_loss;
 
   std::size_t cell(int phase, int j, int i) const {
     return (static_cast<std::size_t>(phase) * nz + j) * nx + i;

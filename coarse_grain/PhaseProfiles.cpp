@@ -30,6 +30,9 @@ PhaseFields profilesOf(const PhaseFields& f) {
   p.profile_area_fraction = f.profile_area_fraction;
   p.center_of_mass_height = f.center_of_mass_height;
   p.snapshots = f.snapshots;
+  p.plate_work = f.plate_work;
+  p.pair_loss = f.pair_loss;
+  p.wall_loss = f.wall_loss;
   return p;
 }
 

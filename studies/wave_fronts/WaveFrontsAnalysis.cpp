@@ -238,6 +238,7 @@ WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& c, const RunSet& run
   for (int law = 0; law < kLaws; ++law) r.states[law] = analyseStates(c, runs, law);
   if (c.lammps) r.lammps = analyseLammps(c, runs, r.paper[0].seed1, r.paper[0].hydro[0]);
   r.cheapest = cheapestModels(c, r);
+  for (int law = 0; law < kLaws; ++law) r.budgets[law] = analyseBudgets(c, runs, law);
   return r;
 }
 
@@ -251,6 +252,7 @@ void writeWaveFrontsResults(h5::File& f, const WaveFrontsConfig& c, const WaveFr
   for (int law = 0; law < kLaws; ++law) writeStates(f, kRoot, law, r.states[law]);
   if (r.lammps) writeLammps(f, kRoot, *r.lammps);
   writeCheapestModels(f, kRoot, r.cheapest);
+  for (int law = 0; law < kLaws; ++law) writeBudgets(f, kRoot, law, r.budgets[law]);
 }
 
 }  // namespace granwave

@@ -15,6 +15,7 @@
 #include "studies/wave_analysis/ImpactFronts.hpp"
 #include "studies/wave_analysis/VelocityFronts.hpp"
 #include "studies/wave_fronts/CheapestModel.hpp"
+#include "studies/wave_fronts/PhaseEnergyBudget.hpp"
 #include "studies/wave_fronts/WaveFrontsStudy.hpp"
 
 namespace granwave {
@@ -97,6 +98,7 @@ struct WaveFrontsResults {
   StateShares states[2];
   std::optional<LammpsComparison> lammps;
   std::vector<SceneCost> cheapest;  // per scene: the paper's dry and wet, then the N sweep
+  LawBudgets budgets[2];            // the paper's scene, phase by phase
 };
 
 WaveFrontsResults analyseWaveFronts(const WaveFrontsConfig& config, const RunSet& runs);

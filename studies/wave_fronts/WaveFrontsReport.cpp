@@ -273,6 +273,7 @@ void reportWaveFronts(const WaveFrontsConfig& c, const WaveFrontsResults& r, Rep
   costSection(c, r.cost, report);
   failureSection(c, r.failures, report);
   stateSection(r, report);
+  energyBudgetSection(r, report);
   std::vector<std::string> verdicts = modelSection(c, r.models, report);
   verdicts.push_back(cheapestModelSection(c, r, report));
   summarise(r, verdicts, report);

@@ -20,6 +20,8 @@ void depthSection(const WaveFrontsConfig& config, const WaveFrontsResults& resul
 void wetLawSection(const WaveFrontsResults& results, Report& report);
 // The layer's state: shares of seeds and time in the period-2 state, state-conditioned fronts.
 void stateSection(const WaveFrontsResults& results, Report& report);
+// The energy budget phase by phase on the paper's scene, particles and continuum.
+void energyBudgetSection(const WaveFrontsResults& results, Report& report);
 // Cost per answer at equal accuracy and the cheapest model per scene; returns its headline line.
 std::string cheapestModelSection(const WaveFrontsConfig& config, const WaveFrontsResults& results,
                                  Report& report);

@@ -125,6 +125,12 @@ void WaveFrontsStudy::planLaw(const StudyFile& f, int law) {
   // candidate's front error is its fit error alone, which more phases narrow.
   const std::string phases = fmt::format("run.phases_per_cycle={}", c_.sweep_phases);
   add(f, RunKind::Hydro, law, C::hydroRun(law, "velocity"), {phases}, 0);
+  // The energy budget phase by phase (PhaseEnergyBudget.hpp), smooth and rough, in runs of
+  // their own: its quadratures change CVODE's steps slightly and cost about a fifth more, which
+  // the cost per answer of the runs above should not carry.
+  for (const std::string particles : {"smooth", "rough"})
+    add(f, RunKind::Hydro, law, C::hydroRun(law, "budget " + particles),
+        {phases, "hydro.energy_budget=true", "hydro.particles=\"" + particles + "\""}, 0);
   add(f, RunKind::Hydro, law, C::hydroRun(law, "constant"),
       {"hydro.restitution_model=\"constant\"", constant_e, phases}, 0);
   for (int n : c_.counts) {

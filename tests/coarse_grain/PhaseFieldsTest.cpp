@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <random>
+#include <vector>
 
 #include "coarse_grain/PhaseAverager.hpp"
 #include "coarse_grain/PhaseFields.hpp"
@@ -107,4 +109,63 @@ TEST(PhaseFields, WindowOfTwoCyclesKeepsAlternateCyclesApart) {
   EXPECT_EQ(f.count[f.cell(1, 3, 0)], 4);
   EXPECT_EQ(f.count[f.cell(0, 3, 0)], 0);
   EXPECT_NEAR(f.center_of_mass_height[1], 3.5 * kD, 1e-15);
+}
+
+namespace {
+
+// Records of one particle at rest, with cumulative energies that grow by known amounts per
+// phase: the walls' work by (phase + 1) mJ, the pair loss by 2 mJ, the wall loss by 0.5 mJ.
+std::vector<Snapshot> budgetRun(int records, int per_cycle) {
+  std::vector<Snapshot> run;
+  double work = 0, pair = 0, wall = 0;
+  for (int k = 0; k < records; ++k) {
+    work += 1e-3 * (k % per_cycle + 1);
+    pair += 2e-3;
+    wall += 0.5e-3;
+    Snapshot s;
+    s.step = static_cast<std::uint64_t>(k);
+    s.x = {0.5 * kD};
+    s.z = {0.5 * kD};
+    s.vx = s.vz = s.omega = {0};
+    s.obs.wall_work = work;
+    s.obs.dissipated_energy = pair + wall;
+    s.obs.wall_dissipated_energy = wall;
+    run.push_back(s);
+  }
+  return run;
+}
+
+PhaseAveragerConfig budgetConfig(int per_cycle) {
+  PhaseAveragerConfig c;
+  c.grid = grid4x4();
+  c.samples_per_cycle = per_cycle;
+  c.cycles_per_window = 1;
+  c.blocks = 2;
+  c.total_cycles = 6;
+  c.fixed_discard = 2;
+  return c;
+}
+
+}  // namespace
+
+TEST(PhaseFields, EnergyBudgetPerPhaseIsTheIncrementSinceTheRecordBefore) {
+  const int M = 4;
+  PhaseAverager av(budgetConfig(M));
+  for (const Snapshot& s : budgetRun(6 * M, M)) av.observe(s);
+  const PhaseFields f = computeFields(av.accumulator(), {kMass, 0, kD, 3});
+  ASSERT_EQ(f.plate_work.size(), static_cast<std::size_t>(M));
+  for (int ph = 0; ph < M; ++ph) {
+    EXPECT_NEAR(f.plate_work[ph], 1e-3 * (ph + 1), 1e-15) << ph;
+    EXPECT_NEAR(f.pair_loss[ph], 2e-3, 1e-15) << ph;
+    EXPECT_NEAR(f.wall_loss[ph], 0.5e-3, 1e-15) << ph;
+  }
+}
+
+TEST(PhaseFields, AccumulatorWithoutABudgetGivesNone) {
+  PhaseAccumulator acc(grid4x4(), 2, 1);
+  acc.countSnapshot(0, 0, 0.0, 1);
+  acc.add(0, 0, 0.5 * kD, 0.5 * kD, 0, 0, 0);
+  const PhaseFields f = computeFields(acc, {kMass, 0, kD, 3});
+  EXPECT_TRUE(f.plate_work.empty());
+  EXPECT_TRUE(f.wall_loss.empty());
 }
