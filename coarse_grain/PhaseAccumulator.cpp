@@ -1,6 +1,7 @@
 #include "coarse_grain/PhaseAccumulator.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -16,12 +17,18 @@ PhaseAccumulator::PhaseAccumulator(const FieldGrid& grid, int phases, int blocks
       snapshots_(static_cast<std::size_t>(blocks) * phases, 0.0),
       z_sum_(snapshots_.size(), 0.0),
       particles_(snapshots_.size(), 0.0),
-      budget_(snapshots_.size() * kBudgetTerms, 0.0) {}
+      budget_(snapshots_.size() * (kBudgetTerms + 1), 0.0) {}
 
 void PhaseAccumulator::addBudget(int block, int phase, const double (&crossed)[kBudgetTerms]) {
   if (budget_lost_) return;
-  const std::size_t at = (static_cast<std::size_t>(block) * phases_ + phase) * kBudgetTerms;
+  for (double x : crossed)
+    if (!std::isfinite(x)) {
+      budget_lost_ = true;
+      return;
+    }
+  const std::size_t at = (static_cast<std::size_t>(block) * phases_ + phase) * (kBudgetTerms + 1);
   for (int k = 0; k < kBudgetTerms; ++k) budget_[at + k] += crossed[k];
+  budget_[at + kBudgetTerms] += 1;
   has_budget_ = true;
 }
 
@@ -29,7 +36,7 @@ double PhaseAccumulator::budget(int block, int phase, int term) const {
   double sum = 0;
   for (int b = 0; b < blocks_; ++b)
     if (block < 0 || b == block)
-      sum += budget_[(static_cast<std::size_t>(b) * phases_ + phase) * kBudgetTerms + term];
+      sum += budget_[(static_cast<std::size_t>(b) * phases_ + phase) * (kBudgetTerms + 1) + term];
   return sum;
 }
 
@@ -61,8 +68,8 @@ void PhaseAccumulator::mergeBlock(const PhaseAccumulator& from, int from_block, 
     snapshots_[j] += from.snapshots_[i];
     z_sum_[j] += from.z_sum_[i];
     particles_[j] += from.particles_[i];
-    for (int t = 0; t < kBudgetTerms; ++t)
-      budget_[j * kBudgetTerms + t] += from.budget_[i * kBudgetTerms + t];
+    for (int t = 0; t <= kBudgetTerms; ++t)
+      budget_[j * (kBudgetTerms + 1) + t] += from.budget_[i * (kBudgetTerms + 1) + t];
     for (int c = 0; c < cells; ++c) sums_[j * cells + c].merge(from.sums_[i * cells + c]);
   }
   has_budget_ = has_budget_ || from.has_budget_;

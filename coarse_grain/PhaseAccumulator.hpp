@@ -58,12 +58,15 @@ class PhaseAccumulator {
   // work of the moving walls, the energy lost in pair collisions and at the walls (J; the
   // increments of the engine's cumulative Observables), summed over the pooled snapshots.
   static constexpr int kBudgetTerms = 3;
+  // A non-finite term (a run file without one of the observables) leaves no budget at all.
   void addBudget(int block, int phase, const double (&crossed)[kBudgetTerms]);
   // Whether any budget was added (an accumulator fed without one, or restored from a
   // checkpoint that had none, has no budget to give).
   bool hasBudget() const { return has_budget_ && !budget_lost_; }
-  // The sum of `term` at (block, phase); block = -1 pools all blocks.
+  // The sum of `term` at (block, phase), and the number of records that carried a budget
+  // there (a record with no record before it carries none); block = -1 pools all blocks.
   double budget(int block, int phase, int term) const;
+  double budgetRecords(int block, int phase) const { return budget(block, phase, kBudgetTerms); }
 
   const CellSums& at(int block, int phase, int cell) const {
     return sums_[(static_cast<std::size_t>(block) * phases_ + phase) * grid_.cells() + cell];
@@ -89,9 +92,10 @@ class PhaseAccumulator {
   int phases_ = 0, blocks_ = 0;
   std::vector<CellSums> sums_;
   std::vector<double> snapshots_, z_sum_, particles_;
-  std::vector<double> budget_;  // [block][phase][term]
+  std::vector<double> budget_;  // [block][phase][term], then the records counted
   bool has_budget_ = false;
-  bool budget_lost_ = false;  // restored from sums without a budget: none can be completed
+  // Restored from sums without a budget, or fed a non-finite one: none can be completed.
+  bool budget_lost_ = false;
 };
 
 }  // namespace granwave

@@ -67,7 +67,8 @@ PhaseFields computeFields(const PhaseAccumulator& acc, const FieldParams& p, int
     for (int t = 0; t < PhaseAccumulator::kBudgetTerms; ++t) {
       terms[t]->assign(f.phases, kNaN);
       for (int ph = 0; ph < f.phases; ++ph)
-        if (f.snapshots[ph] > 0) (*terms[t])[ph] = acc.budget(block, ph, t) / f.snapshots[ph];
+        if (const double n = acc.budgetRecords(block, ph); n > 0)
+          (*terms[t])[ph] = acc.budget(block, ph, t) / n;
     }
   }
   return f;

@@ -33,7 +33,8 @@ struct PhaseFields {
   std::vector<double> center_of_mass_height;  // [phase], m
   std::vector<double> snapshots;              // [phase], snapshots pooled
   // [phase], J: the energy that crossed the layer's budget over the recorded interval ending
-  // at the phase (the moving walls' work, the loss in pair collisions, the loss at the walls),
+  // at the phase (the moving walls' work; the loss in pair collisions, with that of particles
+  // put to rest; the loss in collisions with the plate, lid and side walls),
   // mean over the pooled windows; empty when not recorded (the continuum keeps its own).
   std::vector<double> plate_work, pair_loss, wall_loss;
 

@@ -142,7 +142,6 @@ class HydroSimulation {
 
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
-  // Advances to t; with the energy budget, what crossed it since the last output.
   CvodeOptions solverOptions() const;
   int detectPeriod(const std::vector<double>& com) const;
   long stepBudget() const;

@@ -20,8 +20,9 @@ struct Observables {
   double rotational_energy = 0;      // J
   double potential_energy = 0;       // J, m g z summed
   double dissipated_energy = 0;      // J, cumulative loss in collisions (partner/wall frame)
-  // J, the part of dissipated_energy lost in collisions with the plate and the lid, and in
-  // coming to rest on them (the energy budget of the layer: docs/physics.md).
+  // J, the part of dissipated_energy lost in collisions with the walls (plate, lid and side
+  // walls; the energy budget of the layer: docs/physics.md). A particle the resting-contact
+  // rule puts to rest on the plate counts in dissipated_energy only.
   double wall_dissipated_energy = 0;
   double wall_work = 0;  // J, cumulative work done by moving walls
   double pressure = 0;   // Pa m (2D), collisional+kinetic, periodic boxes only

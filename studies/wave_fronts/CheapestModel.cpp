@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "coarse_grain/PeriodDoublingSeries.hpp"  // kZ95
@@ -47,7 +48,8 @@ SceneCost paperScene(const WaveFrontsConfig& c, const ModelHierarchy& h, int law
     m.model = cand.description;
     m.continuum = cand.key.rfind("hydro", 0) == 0;
     m.failed = cand.failed;
-    m.cpu = m.continuum ? cand.run_cpu : cand.cpu_per_cycle * c.answer_cycles;
+    // The run's CPU time as recorded (the particles' too); a failed run gave no answer.
+    m.cpu = cand.failed ? NAN : m.continuum ? cand.run_cpu : cand.cpu_per_cycle * c.answer_cycles;
     m.speed = cand.speed;
     m.gap = relativeGap(cand.speed, h.reference);
     m.periods = cand.periods;
@@ -115,8 +117,13 @@ Match sweepMatch(const Measurement& v, int period, const Measurement& ref, doubl
                       period > 0 ? std::to_string(period) : std::string("none"), periods.front());
     return Match::no;
   }
+  const bool among = std::find(periods.begin(), periods.end(), period) != periods.end();
+  if (!agree && !among) {
+    why = "the seeds' periods differ and the continuum's is none of them";
+    return Match::not_yet;
+  }
   const std::string period_note =
-      agree ? "front speed and period" : "front speed alone (the seeds' periods differ)";
+      agree ? "front speed and period" : "front speed, and a period one of the seeds has";
   if (ref.valid()) {
     why = period_note;
     return frontMatch(v, ref, tolerance, true);
@@ -135,11 +142,13 @@ Match sweepMatch(const Measurement& v, int period, const Measurement& ref, doubl
 void pickCheapest(SceneCost& s) {
   s.cheapest = 0;
   s.cheaper_open.clear();
+  // Without the particles' own cost nothing can be shown to be cheaper than them.
+  if (s.models.empty() || !std::isfinite(s.models.front().cpu)) return;
   for (std::size_t i = 1; i < s.models.size(); ++i) {
     const ModelCost& m = s.models[i];
     if (m.match != Match::yes || !std::isfinite(m.cpu)) continue;
-    const ModelCost& best = s.models[static_cast<std::size_t>(s.cheapest)];
-    if (!std::isfinite(best.cpu) || m.cpu < best.cpu) s.cheapest = static_cast<int>(i);
+    if (m.cpu < s.models[static_cast<std::size_t>(s.cheapest)].cpu)
+      s.cheapest = static_cast<int>(i);
   }
   const double limit = s.models.empty() ? NAN : s.models[static_cast<std::size_t>(s.cheapest)].cpu;
   for (std::size_t i = 1; i < s.models.size(); ++i) {

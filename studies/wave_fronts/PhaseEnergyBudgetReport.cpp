@@ -45,7 +45,9 @@ Figure budgetFigure(const LawBudgets& lb, int law) {
   fig.caption =
       "Solid: the work the plate and lid have done on the layer since the window's start; "
       "dashed: the energy lost in pair collisions and at the walls. Particles: mean over the "
-      "seeds' windows of 2 cycles; continuum: its periodic window. In a periodic state the two "
+      "seeds' windows; continuum: its periodic window (2 cycles when it found none). Each point "
+      "ends the interval it sums, so the first one holds the interval just before the window. In a "
+      "periodic state the two "
       "meet at the window's end; where they part within it, the layer stores the difference "
       "as kinetic and potential energy.";
   return fig;
@@ -71,7 +73,10 @@ void energyBudgetSection(const WaveFrontsResults& r, Report& report) {
       "The energy that crosses the layer over each phase interval: the work of the moving "
       "plate and lid, the loss in pair collisions (normal and tangential parts together: the "
       "particles' observables do not split them, the rough continuum's friction and rotation "
-      "loss is counted here) and the loss at the plate and lid. Particles: the full model's "
+      "loss is counted here, and so is that of particles the resting-contact rule puts to rest) "
+      "and "
+      "the loss in collisions with the walls (plate, lid and side walls). Particles: the full "
+      "model's "
       "fields over seeds; continuum: the velocity-dependent closure (Jenkins-Richman) for "
       "smooth disks and for rough particles, each with its budget integrated by CVODE beside "
       "the layer (docs/hydro.md, \"Energy budget\").");

@@ -62,7 +62,7 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
   s.hydro_failure = h.failure;
   if (s.hydro_ok) {
     s.hydro = h.fronts.all;
-    s.hydro_cpu = h.fields->cpu_seconds;
+    s.hydro_cpu = h.cpu;  // as recorded, as the particles' run: the whole process
     s.hydro_period = h.fields->periodic ? static_cast<int>(h.fields->period) : 0;
   }
   return s;

@@ -169,3 +169,25 @@ TEST(PhaseFields, AccumulatorWithoutABudgetGivesNone) {
   EXPECT_TRUE(f.plate_work.empty());
   EXPECT_TRUE(f.wall_loss.empty());
 }
+
+TEST(PhaseFields, FirstRecordOfARunCarriesNoBudgetAndDoesNotLowerItsPhasesMean) {
+  const int M = 4;
+  PhaseAveragerConfig c = budgetConfig(M);
+  c.fixed_discard = 0;  // the very first record is pooled: nothing came before it
+  PhaseAverager av(c);
+  for (const Snapshot& s : budgetRun(6 * M, M)) av.observe(s);
+  const PhaseFields f = computeFields(av.accumulator(), {kMass, 0, kD, 3});
+  ASSERT_EQ(f.plate_work.size(), static_cast<std::size_t>(M));
+  EXPECT_NEAR(f.plate_work[0], 1e-3, 1e-15);
+  EXPECT_NEAR(f.pair_loss[0], 2e-3, 1e-15);
+}
+
+TEST(PhaseFields, ANonFiniteEnergyLeavesNoBudgetRatherThanNaNsAsData) {
+  const int M = 4;
+  PhaseAverager av(budgetConfig(M));
+  std::vector<Snapshot> run = budgetRun(6 * M, M);
+  for (Snapshot& s : run) s.obs.wall_dissipated_energy = NAN;  // a file without it
+  for (const Snapshot& s : run) av.observe(s);
+  EXPECT_FALSE(av.accumulator().hasBudget());
+  EXPECT_TRUE(computeFields(av.accumulator(), {kMass, 0, kD, 3}).plate_work.empty());
+}

@@ -59,10 +59,19 @@ TEST(SweepMatch, APeriodOtherThanTheOneEverySeedAgreesOnDoesNotReproduce) {
   EXPECT_EQ(why, "period 1 against the particles' 2");
 }
 
-TEST(SweepMatch, SeedsOfDifferentPeriodsLeaveTheFrontAloneToJudge) {
+TEST(SweepMatch, SeedsOfDifferentPeriodsJudgeTheFrontOfAContinuumWithOneOfTheirPeriods) {
   std::string why;
-  EXPECT_EQ(sweepMatch({2.0, 0.05}, 1, {2.0, 0.05}, NAN, {2, 4}, 0.15, why), Match::yes);
-  EXPECT_NE(why.find("front speed alone"), std::string::npos) << why;
+  EXPECT_EQ(sweepMatch({2.0, 0.05}, 4, {2.0, 0.05}, NAN, {2, 4}, 0.15, why), Match::yes);
+  EXPECT_NE(why.find("one of the seeds has"), std::string::npos) << why;
+  // A period none of them has stays open: the seeds scatter, and two do not rule it out.
+  EXPECT_EQ(sweepMatch({2.0, 0.05}, 1, {2.0, 0.05}, NAN, {2, 4}, 0.15, why), Match::not_yet);
+}
+
+TEST(CheapestModel, NothingIsCheaperThanParticlesWhoseCostIsUnknown) {
+  SceneCost s;
+  s.models = {model("particles", NAN, Match::yes, true), model("hydro A", 2, Match::yes)};
+  pickCheapest(s);
+  EXPECT_EQ(s.cheapest, 0);
 }
 
 TEST(SweepMatch, AgainstALowerBoundAFrontFarTooSlowFailsAndAFastOneStaysOpen) {
