@@ -12,7 +12,7 @@ if ! command -v pvpython > /dev/null; then
   exit 77
 fi
 work=$(mktemp -d "${TMPDIR:-/tmp}/granwave-paraview-XXXXXX")
-"$1" hydro "$2" --set hydro.dimensions=2 --set hydro.cells=20 --set container.periodic_x=true \
+"$1" hydro "$2" --set hydro.dimensions=2 --set hydro.columns=4 --set hydro.cells=20 --set container.periodic_x=true \
   --set run.duration=0.3 -o "$work/hydro.h5" -q > /dev/null
 test -f "$work/hydro.xdmf"
 pvpython "$(dirname "$0")/fields_in_paraview.py" "$work/hydro.xdmf" "$work/hydro.h5" \
