@@ -53,10 +53,11 @@ Figure budgetFigure(const LawBudgets& lb, int law) {
   return fig;
 }
 
+// mJ; the continuum's (exact) without an error, the particles' with the error's digits.
 std::string perCycle(const Measurement& m) {
   if (!m.valid()) return "–";
   if (!(m.error > 0)) return fmt::format("{:.3f}", 1e3 * m.value);
-  return fmt::format("{:.3f} ± {:.3f}", 1e3 * m.value, 1e3 * m.error);
+  return format(Measurement{1e3 * m.value, 1e3 * m.error});
 }
 
 std::string share(const Measurement& part, const BudgetSeries& b) {
