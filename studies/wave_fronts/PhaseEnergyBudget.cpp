@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <numeric>
 
 #include "studies/contract/StudyResults.hpp"
 #include "studies/method_comparison/RunOutcomes.hpp"
@@ -13,11 +14,7 @@ namespace granwave {
 
 namespace {
 
-double sum(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x;
-  return s;
-}
+double sum(const std::vector<double>& v) { return std::accumulate(v.begin(), v.end(), 0.0); }
 
 // The full particle model over the seeds: per phase the mean of the seeds' fields, per cycle
 // the mean and standard error of the seeds' window totals.

@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <vector>
 
 #include "HydroTestSupport.hpp"
@@ -21,17 +20,7 @@ using test::kMass;
 
 namespace {
 
-// The paper's dry scene: 300 beads per 30 d of width (10 rows), 10 Hz, Gamma = 4, the drive
-// ramped over two cycles.
-HydroGeometry paperGeometry(int cells) {
-  HydroGeometry g;
-  g.cells = cells;
-  g.height = 30 * kD;
-  g.omega = 2 * std::numbers::pi * 10;
-  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
-  g.ramp_time = 0.2;
-  return g;
-}
+using test::paperGeometry;  // the paper's dry scene's box and drive, ramped over two cycles
 
 // The smallest P in 1..4 for which the last P cycles of the centre of mass repeat the P before
 // to `tolerance` of its excursion (HydroSimulation's criterion), 0 if none.

@@ -4,7 +4,6 @@
 // top, hot and cold cells), flat or varying between columns.
 #include <cmath>
 #include <memory>
-#include <numbers>
 #include <random>
 #include <vector>
 
@@ -13,12 +12,10 @@
 
 namespace granwave::hydro::test {
 
+// The paper's box and drive at full amplitude from t = 0 (no ramp).
 inline HydroGeometry drivenBox(int cells) {
-  HydroGeometry g;
-  g.cells = cells;
-  g.height = 30 * kD;
-  g.omega = 2 * std::numbers::pi * 10;
-  g.amplitude = 4 * 9.81 / (g.omega * g.omega);
+  HydroGeometry g = paperGeometry(cells);
+  g.ramp_time = 0;
   return g;
 }
 
