@@ -62,36 +62,6 @@ TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
   EXPECT_EQ(f.readStringAttribute("/plate_frame/temperature", "unit"), "J");
 }
 
-// A coarse subset of the map the solver must hold on (docs/hydro.md, "Where it holds: the
-// map"): corners of the stability grid, a deep layer, the wet law's extremes, both closure
-// sets, rough particles and a loose tolerance on a fine grid, all wet (the first solver failed
-// on each). No case may fail numerically; each ends in a periodic state of period 1-4, a
-// physical diagnosis (at rest, moving as a solid), or no period within its 40 cycles.
-TEST_F(HydroCli, CoarseSubsetOfTheParameterMapRunsWithoutNumericalFailure) {
-  const std::string scene = "[run]\nphases_per_cycle = 50\nduration = 4.0\n";
-  const char* cases[] = {
-      "--set drive.gamma=1.5 --set hydro.cells=60",
-      "--set drive.frequency=30 --set drive.gamma=8 --set hydro.cells=60 --set run.duration=1.34",
-      "--set particles.count=600 --set hydro.cells=100",
-      "--set contact.stokes_critical=80 --set contact.e_inf=0.8 --set hydro.cells=60",
-      "--set hydro.transport=\"garzo-dufty\" --set hydro.cells=60",
-      ("--set hydro.particles=\"rough\" --set drive.frequency=15 --set drive.gamma=6 "
-       "--set hydro.cells=60 --set run.duration=2.67"),
-      "--set hydro.rtol=1e-3 --set hydro.cells=200",
-  };
-  for (const char* args : cases) {
-    SCOPED_TRACE(args);
-    const Result r = run(scene, std::string("-o h.h5 --set contact.restitution=\"wet\" ") + args);
-    ASSERT_EQ(r.code, 0) << r.err;
-    const std::size_t at = r.out.find("centre-of-mass period ");
-    ASSERT_NE(at, std::string::npos) << r.out;
-    const std::string period = r.out.substr(at + 22, r.out.find('\n', at) - at - 22);
-    const bool undecided = r.out.find("NOT reached after 40 cycles") != std::string::npos;
-    EXPECT_TRUE(period == "1T" || period == "2T" || period == "3T" || period == "4T" || undecided)
-        << r.out;
-  }
-}
-
 TEST_F(HydroCli, UndrivenSceneIsRejectedAndNothingWritten) {
   const Result r = run("[drive]\nfrequency = 0\n", "-o h.h5");
   EXPECT_EQ(r.code, 2);
