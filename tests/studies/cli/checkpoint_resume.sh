@@ -16,7 +16,7 @@ mkdir -p "$work/plain" "$work/whole" "$work/killed"
 fail() { echo "checkpoint_resume: $*" >&2; exit 1; }
 
 # The same relative command line in both directories: the provenance must match too.
-run() { "$granwave" simulate "$scene" --set run.duration=6 -o run.h5 --fields run.fields.h5 -q "$@"; }
+run() { "$granwave" simulate "$scene" --set run.duration=4 -o run.h5 --fields run.fields.h5 -q "$@"; }
 
 (cd "$work/plain" && run > summary.txt)
 (cd "$work/whole" && run --checkpoint-every 0.2 > summary.txt)
@@ -28,7 +28,7 @@ impacts=$(h5dump -a /granwave/pair_impacts/total "$work/whole/run.h5" | sed -n '
 
 cd "$work/killed"
 # Not through run(): $! must be granwave itself, not a subshell.
-"$granwave" simulate "$scene" --set run.duration=6 -o run.h5 --fields run.fields.h5 -q \
+"$granwave" simulate "$scene" --set run.duration=4 -o run.h5 --fields run.fields.h5 -q \
   --checkpoint-every 0.2 > /dev/null &
 pid=$!
 i=0
