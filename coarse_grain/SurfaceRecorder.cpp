@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <string>
 
 #include "h5/H5Error.hpp"
 
@@ -19,6 +20,20 @@ void SurfaceRecorder::observe(const Snapshot& s) {
   const int M = cfg_.records_per_cycle;
   const long cycle = static_cast<long>(s.step / static_cast<std::uint64_t>(M));
   const int phase = static_cast<int>(s.step % static_cast<std::uint64_t>(M));
+  // Only a record that extends a cycle in phase order is measured (the surface is the cost).
+  const bool next = cycles_.empty() || cycles_.back().index != cycle
+                        ? phase == 0
+                        : phase == cycles_.back().filled;
+  if (!next) return;
+  record(cycle, phase, layerSurface(s, cfg_.width, cfg_.diameter, cfg_.periodic_x, cfg_.surface));
+}
+
+void SurfaceRecorder::record(long cycle, int phase, const LayerSurface& surf) {
+  const int M = cfg_.records_per_cycle;
+  if (surf.profile.height.size() != static_cast<std::size_t>(columns_))
+    throw std::invalid_argument("surface recorder: a surface of " +
+                                std::to_string(surf.profile.height.size()) + " columns, not " +
+                                std::to_string(columns_));
   if (cycles_.empty() || cycles_.back().index != cycle) {
     // A cycle whose first record was missed (a run started mid-cycle) is never whole.
     if (phase != 0) return;
@@ -31,8 +46,6 @@ void SurfaceRecorder::observe(const Snapshot& s) {
   }
   Cycle& c = cycles_.back();
   if (phase != c.filled) return;  // a gap: the cycle stays partial
-  const LayerSurface surf =
-      layerSurface(s, cfg_.width, cfg_.diameter, cfg_.periodic_x, cfg_.surface);
   std::copy(surf.profile.height.begin(), surf.profile.height.end(),
             c.height.begin() + static_cast<long>(phase) * columns_);
   c.bulk[phase] = surf.bulk_area_fraction;

@@ -2,7 +2,8 @@
 // Records the layer's surface h(x) (LayerSurface.hpp) at every recorded phase of the last
 // `keep_cycles` drive cycles of a run, for the space-time spectrum of its surface waves
 // (SurfaceWaveSpectrum.hpp). An observer of `granwave simulate --fields`; saved with
-// checkpoints, so a continued run records exactly what an uninterrupted one would.
+// checkpoints, so a continued run records exactly what an uninterrupted one would. The 2D
+// continuum hands it the surfaces of its fields (`record`), so both are measured alike.
 #include <deque>
 #include <string>
 #include <vector>
@@ -39,6 +40,9 @@ class SurfaceRecorder : public SnapshotObserver, public Checkpointable {
  public:
   explicit SurfaceRecorder(const SurfaceRecorderConfig& config);
   void observe(const Snapshot& s) override;
+  // One record's surface, measured elsewhere (a continuum's field: layerSurfaceOfField), at
+  // record `phase` of drive cycle `cycle`; its profile must have the recorder's columns.
+  void record(long cycle, int phase, const LayerSurface& surface);
   void saveState(h5::File& file, const std::string& group) const override;
   void restoreState(const h5::File& file, const std::string& group) override;
   // The kept whole cycles from run cycle `from` on (all kept ones if they start later).

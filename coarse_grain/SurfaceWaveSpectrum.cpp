@@ -1,6 +1,7 @@
 #include "coarse_grain/SurfaceWaveSpectrum.hpp"
 
 #include <fftw3.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -246,6 +247,21 @@ SurfaceWaveAnalysis analyseSurfaceWaves(const SurfaceSeries& s, const SurfaceSpe
   a.recent_records = recent;
   a.recent_height.assign(s.height.end() - static_cast<long>(recent) * s.columns, s.height.end());
   return a;
+}
+
+int surfaceWindowCycles(int cycles, const SurfaceSpectrumOptions& o) {
+  if (cycles >= 2 * o.window_cycles) return o.window_cycles;
+  return std::max(4, cycles / 4 * 2);
+}
+
+std::string surfaceSpectrumLine(const SurfaceWaveAnalysis& s) {
+  return fmt::format(
+      "surface spectrum over {} windows of {} cycles: f/2 wave in {:.0f} % of them; standing "
+      "mode {} (lambda {:.1f} +- {:.1f} d), amplitude {:.2f} +- {:.2f} d (noise {:.2f} d), "
+      "subharmonic share {:.2f} +- {:.2f}\n",
+      s.windows.size(), s.window_cycles, 100 * s.wave_fraction, s.standing_mode, s.wavelength_d,
+      s.wavelength_error_d, s.amplitude_d, s.amplitude_error_d, s.noise_d, s.subharmonic_share,
+      s.subharmonic_share_error);
 }
 
 }  // namespace granwave

@@ -39,6 +39,7 @@
 // Clement et al., PRE 53, 2972 (1996)) has a large P_sub at a fixed position; a wave drifting
 // or a pattern changing from cycle to cycle puts its power into r instead.
 #include <complex>
+#include <string>
 #include <vector>
 
 #include "coarse_grain/SurfaceRecorder.hpp"
@@ -90,5 +91,14 @@ struct SurfaceWaveAnalysis {
 // Throws std::invalid_argument for an odd or non-positive window.
 SurfaceWaveAnalysis analyseSurfaceWaves(const SurfaceSeries& series,
                                         const SurfaceSpectrumOptions& options = {});
+
+// The window for `cycles` pooled cycles: options.window_cycles, or for fewer than two such
+// windows the largest even number of cycles that makes two, so that a short run still has a
+// spread over windows; at least 4 (the noise of a window of W cycles has W - 2 degrees of
+// freedom).
+int surfaceWindowCycles(int cycles, const SurfaceSpectrumOptions& options = {});
+
+// The one-line summary the commands print ("surface spectrum over ...", newline-terminated).
+std::string surfaceSpectrumLine(const SurfaceWaveAnalysis& analysis);
 
 }  // namespace granwave

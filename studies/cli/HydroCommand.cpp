@@ -81,6 +81,10 @@ void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const s
       "{} linear iterations, {} preconditioner Jacobians\n",
       c.cpu_seconds, c.cpu_seconds / static_cast<double>(c.cycles), c.cycles, c.steps, c.rhs_evals,
       c.linear_iterations, c.preconditioner_jacobians);
+  if (c.surface.available)
+    fmt::print("{}", surfaceSpectrumLine(c.surface));
+  else
+    fmt::print("surface spectrum none: {} cycles are too few for two windows\n", c.cycles);
   fmt::print("output          {} (ParaView: {})\n", out, xdmfSidecarPath(out));
 }
 

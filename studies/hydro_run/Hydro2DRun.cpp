@@ -7,6 +7,7 @@
 
 #include "hydro/Layer2DStart.hpp"
 #include "scene/SceneParser.hpp"
+#include "studies/hydro_run/ContinuumSurface.hpp"
 #include "studies/hydro_run/HydroModel.hpp"
 #include "studies/hydro_run/HydroRun.hpp"
 
@@ -97,8 +98,28 @@ Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_n
   if (progress)
     fmt::print(progress, "  integrating {} cycles ({} columns x {} cells)...\n", o.cycles,
                op->columns(), op->cells());
+  // The surface at every phase, measured as the particles' (ContinuumSurface.hpp); its
+  // spectrum over the run's second half, as the waves grow from the seeded perturbation.
+  const ContinuumColumns grid{op->columns(), op->cells(), scene.container.width,
+                              scene.container.periodic_x, scene.particles.diameter};
+  SurfaceRecorderConfig rc;
+  rc.records_per_cycle = o.samples_per_cycle;
+  rc.keep_cycles = o.cycles;
+  rc.width = grid.width;
+  rc.diameter = grid.diameter;
+  rc.periodic_x = grid.periodic_x;
+  SurfaceRecorder surface(rc);
   hydro::HydroSimulation2D sim(*op, o);
-  return hydro2DRunContent(scene, *op, sim.run(), o);
+  const hydro::Hydro2DResult result =
+      sim.run([&](const hydro::Hydro2DPhase& ph, int cycle, int phase) {
+        surface.record(cycle, phase, continuumSurface(ph, grid, rc.surface));
+      });
+  Hydro2DRunContent content = hydro2DRunContent(scene, *op, result, o);
+  const SurfaceSeries series = surface.series(o.cycles / 2);
+  SurfaceSpectrumOptions so;
+  so.window_cycles = surfaceWindowCycles(series.cycles, so);
+  content.surface = analyseSurfaceWaves(series, so);
+  return content;
 }
 
 }  // namespace granwave

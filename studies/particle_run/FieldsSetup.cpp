@@ -108,16 +108,7 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
         w.cycles, 100 * w.crystal_share, 100 * w.amorphous_share, 100 * w.liquid_share,
         w.compact_phase, w.coordination, w.psi6, w.lid_row, 100 * w.lid_row_cycles);
   }
-  if (a.surface.available) {
-    const SurfaceWaveAnalysis& s = a.surface;
-    r += fmt::format(
-        "surface spectrum over {} windows of {} cycles: f/2 wave in {:.0f} % of them; standing "
-        "mode {} (lambda {:.1f} +- {:.1f} d), amplitude {:.2f} +- {:.2f} d (noise {:.2f} d), "
-        "subharmonic share {:.2f} +- {:.2f}\n",
-        s.windows.size(), s.window_cycles, 100 * s.wave_fraction, s.standing_mode, s.wavelength_d,
-        s.wavelength_error_d, s.amplitude_d, s.amplitude_error_d, s.noise_d, s.subharmonic_share,
-        s.subharmonic_share_error);
-  }
+  if (a.surface.available) r += surfaceSpectrumLine(a.surface);
   for (const FrontEpisode& e : a.fronts) {
     if (!e.from_impact) continue;
     r += fmt::format(

@@ -9,6 +9,7 @@
 #include <system_error>
 
 #include "coarse_grain/FieldsFile.hpp"
+#include "coarse_grain/SurfaceWavesFile.hpp"
 #include "files/AtomicOutput.hpp"
 #include "h5/AtomicFile.hpp"
 #include "h5/File.hpp"
@@ -154,6 +155,7 @@ void writeHydro2DRunFile(const std::string& path, const Hydro2DRunContent& c) {
   writePlateFrame(f, c);
   writeMesh(f, c);
   writeSolver(f, c);
+  writeSurfaceWaves(f, c.surface);  // nothing when the run had too few cycles for a window
   f.createGroup("/parameters");
   f.writeStringDataset("/parameters/scene", c.scene_toml);
   af.commit();

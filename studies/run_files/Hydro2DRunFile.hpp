@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "coarse_grain/SurfaceWaveSpectrum.hpp"
+
 namespace granwave {
 
 struct Hydro2DRunContent {
@@ -20,6 +22,8 @@ struct Hydro2DRunContent {
   // pressure (N/m).
   std::vector<double> area_fraction, temperature, velocity_x, velocity_z, pressure;
   std::vector<double> com_per_phase;  // every phase of the run, plate frame, m
+  // The surface waves of the run's second half (/surface, coarse_grain/SurfaceWavesFile.hpp).
+  SurfaceWaveAnalysis surface;
   int samples_per_cycle = 0;
   double rtol = 0, cpu_seconds = 0, mass_drift = 0;
   std::int64_t cycles = 0, steps = 0, rhs_evals = 0, linear_iterations = 0;

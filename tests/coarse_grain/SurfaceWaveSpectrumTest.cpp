@@ -175,6 +175,39 @@ TEST(SurfaceRecorder, KeepsWholeCyclesAndRestoresThroughACheckpoint) {
   EXPECT_EQ(whole.series(8).cycles, 2);
 }
 
+TEST(SurfaceRecorder, SurfacesMeasuredElsewhereAreKeptInPhaseOrderAndMustFitTheColumns) {
+  // A continuum hands over its surfaces (record): a cycle's records in phase order make it
+  // whole; a record of the wrong column count is refused.
+  SurfaceRecorderConfig cfg;
+  cfg.records_per_cycle = 4;
+  cfg.keep_cycles = 3;
+  cfg.width = 10 * d;
+  cfg.diameter = d;
+  SurfaceRecorder r(cfg);
+  LayerSurface flat;
+  flat.profile.height.assign(10, 3 * d);
+  for (long c = 0; c < 4; ++c)
+    for (int phase = 0; phase < 4; ++phase)
+      if (c != 1 || phase != 2) r.record(c, phase, flat);  // cycle 1 misses a record
+  const SurfaceSeries s = r.series();
+  EXPECT_EQ(s.cycles, 2);  // cycles 2 and 3: cycle 1 is partial and breaks the run
+  EXPECT_EQ(s.first_cycle, 2);
+  EXPECT_EQ(s.height.size(), 2u * 4 * 10);
+  LayerSurface narrow;
+  narrow.profile.height.assign(9, 3 * d);
+  EXPECT_THROW(r.record(4, 0, narrow), std::invalid_argument);
+}
+
+TEST(SurfaceWaveSpectrum, ShortRunsGetTheLargestEvenWindowGivingTwo) {
+  // 10 cycles when two windows of 10 fit; else the largest even window that fits twice, and
+  // never below 4 (the noise has W - 2 degrees of freedom).
+  EXPECT_EQ(surfaceWindowCycles(30), 10);
+  EXPECT_EQ(surfaceWindowCycles(20), 10);
+  EXPECT_EQ(surfaceWindowCycles(19), 8);
+  EXPECT_EQ(surfaceWindowCycles(8), 4);
+  EXPECT_EQ(surfaceWindowCycles(5), 4);
+}
+
 TEST(SurfaceWavesFile, RoundTripKeepsTheAnalysis) {
   const double A = d, L = 40 * d;
   const SurfaceSeries s = series(40, false, 20, [&](double x, int c, int phi) {

@@ -96,3 +96,18 @@ TEST_F(HydroCli, BadHydroKeyIsRejectedWithTheValidChoices) {
   EXPECT_NE(r.err.find("garzo-dufty"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "h.h5"));
 }
+
+// The 2D run measures its layer's surface as the particles' runs do: the run file's /surface
+// group (the fields file's layout) over the second half of the run, and the same summary line.
+TEST_F(HydroCli, TwoDimensionalRunWritesTheSurfaceSpectrumOfItsSecondHalf) {
+  const Result r = run("[run]\nphases_per_cycle = 20\nduration = 0.3\n",
+                       "-o h.h5 --set hydro.dimensions=2 --set hydro.columns=2 --set "
+                       "hydro.cells=10 --set container.periodic_x=true");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("surface spectrum over 1 windows of 4 cycles"), std::string::npos) << r.out;
+  auto f = granwave::h5::File::openReadOnly((dir_ / "h.h5").string());
+  EXPECT_EQ(f.readAttribute<std::int64_t>("/surface", "columns"), 30);  // one per d of 30 d
+  EXPECT_EQ(f.readAttribute<std::int64_t>("/surface", "cycles"), 4);    // cycles 5-8 of 8
+  EXPECT_EQ(f.readAttribute<std::int64_t>("/surface", "records_per_cycle"), 20);
+  EXPECT_EQ(f.shape("/surface/recent_height"), (granwave::h5::Shape{80, 30}));
+}
