@@ -41,6 +41,11 @@ struct CvodeIntegrator::Impl {
   double t = 0;
   int n = 0;
   std::string rhs_error;  // an exception escaping the RHS, reported after CVODE returns
+  // Right-hand sides refused as not finite (flag > 0: CVODE retries with a shorter step), and
+  // the first component that was not, in the state or in its rate, of the last one refused.
+  long refused = 0;
+  int refused_component = -1;
+  bool refused_state = false;
 
   ~Impl() {
     if (cvode) CVodeFree(&cvode);
@@ -56,7 +61,9 @@ struct CvodeIntegrator::Impl {
   static int rhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user) {
     auto* self = static_cast<Impl*>(user);
     try {
-      return self->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+      const int flag = self->f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+      if (flag > 0) self->noteRefused(N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+      return flag;
     } catch (const std::exception& e) {
       self->rhs_error = e.what();
       return -1;
@@ -101,7 +108,18 @@ struct CvodeIntegrator::Impl {
     }
   }
 
-  // The component with the largest weighted local error estimate, -1 if unavailable.
+  void noteRefused(const double* y, const double* yd) {
+    ++refused;
+    for (int k = 0; k < n; ++k)
+      if (!std::isfinite(y[k]) || !std::isfinite(yd[k])) {
+        refused_component = k;
+        refused_state = !std::isfinite(y[k]);
+        return;
+      }
+  }
+
+  // The component with the largest weighted local error estimate, -1 if unavailable or if
+  // every estimate is zero (after failed Newton iterations CVODE has none to give).
   int worstComponent() const {
     N_Vector ele = N_VClone(y), w = N_VClone(y);
     int worst = -1;
@@ -109,7 +127,7 @@ struct CvodeIntegrator::Impl {
         CVodeGetErrWeights(cvode, w) == CV_SUCCESS) {
       const double* e = N_VGetArrayPointer(ele);
       const double* wt = N_VGetArrayPointer(w);
-      double best = -1;
+      double best = 0;
       for (int i = 0; i < n; ++i) {
         const double v = std::abs(e[i] * wt[i]);
         if (std::isfinite(v) && v > best) {
@@ -137,6 +155,10 @@ struct CvodeIntegrator::Impl {
       msg << ", largest local error in "
           << (name ? name(worst) : "component " + std::to_string(worst));
     if (!rhs_error.empty()) msg << "; right-hand side: " << rhs_error;
+    if (refused > 0 && refused_component >= 0)
+      msg << "; " << refused << " right-hand side(s) not finite, the last in the "
+          << (refused_state ? "state" : "rate") << " of "
+          << (name ? name(refused_component) : "component " + std::to_string(refused_component));
     throw CvodeError(msg.str(), call, flag, tcur, h, worst);
   }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "HydroTestSupport.hpp"
@@ -255,5 +256,28 @@ TEST(CvodeIntegrator, ExceptionInRightHandSideIsReportedNotSwallowed) {
     FAIL() << "expected a CvodeError";
   } catch (const CvodeError& e) {
     EXPECT_NE(std::string(e.what()).find("closure out of range"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CvodeIntegrator, RefusedNonFiniteRatesAreCountedAndTheLastOneNamed) {
+  // From t = 0.5 on, the rate of variable 1 is not finite and the right-hand side refuses it
+  // (flag 1, as the operators do): CVODE shortens its step until it gives up, and the error
+  // names the variable (after failed Newton iterations CVODE may have no local error to name).
+  CvodeOptions o;
+  o.atol = {1e-10, 1e-10};
+  auto f = [](double t, const double* y, double* d) {
+    d[0] = -y[0];
+    d[1] = t > 0.5 ? std::numeric_limits<double>::quiet_NaN() : -y[1];
+    return std::isfinite(d[1]) ? 0 : 1;
+  };
+  CvodeIntegrator cv(f, 0, {1.0, 1.0}, o, [](int k) { return "variable " + std::to_string(k); });
+  try {
+    cv.advanceTo(1.0);
+    FAIL() << "expected a CvodeError";
+  } catch (const CvodeError& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("right-hand side(s) not finite, the last in the rate of variable 1"),
+              std::string::npos)
+        << msg;
   }
 }
