@@ -30,6 +30,10 @@ void SurfaceRecorder::observe(const Snapshot& s) {
 
 void SurfaceRecorder::record(long cycle, int phase, const LayerSurface& surf) {
   const int M = cfg_.records_per_cycle;
+  if (cycle < 0 || phase < 0 || phase >= M)
+    throw std::invalid_argument("surface recorder: record " + std::to_string(phase) + " of cycle " +
+                                std::to_string(cycle) + " is outside 0.." + std::to_string(M - 1) +
+                                " of a cycle >= 0");
   if (surf.profile.height.size() != static_cast<std::size_t>(columns_))
     throw std::invalid_argument("surface recorder: a surface of " +
                                 std::to_string(surf.profile.height.size()) + " columns, not " +

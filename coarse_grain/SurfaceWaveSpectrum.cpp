@@ -255,13 +255,18 @@ int surfaceWindowCycles(int cycles, const SurfaceSpectrumOptions& o) {
 }
 
 std::string surfaceSpectrumLine(const SurfaceWaveAnalysis& s) {
+  // The error is the spread over windows: with one window there is none to give.
+  const bool spread = s.windows.size() >= 2;
+  const auto pm = [&](double v, double e, int digits) {
+    return spread ? fmt::format("{:.{}f} +- {:.{}f}", v, digits, e, digits)
+                  : fmt::format("{:.{}f} +- n/a", v, digits);
+  };
   return fmt::format(
       "surface spectrum over {} windows of {} cycles: f/2 wave in {:.0f} % of them; standing "
-      "mode {} (lambda {:.1f} +- {:.1f} d), amplitude {:.2f} +- {:.2f} d (noise {:.2f} d), "
-      "subharmonic share {:.2f} +- {:.2f}\n",
-      s.windows.size(), s.window_cycles, 100 * s.wave_fraction, s.standing_mode, s.wavelength_d,
-      s.wavelength_error_d, s.amplitude_d, s.amplitude_error_d, s.noise_d, s.subharmonic_share,
-      s.subharmonic_share_error);
+      "mode {} (lambda {} d), amplitude {} d (noise {:.2f} d), subharmonic share {}\n",
+      s.windows.size(), s.window_cycles, 100 * s.wave_fraction, s.standing_mode,
+      pm(s.wavelength_d, s.wavelength_error_d, 1), pm(s.amplitude_d, s.amplitude_error_d, 2),
+      s.noise_d, pm(s.subharmonic_share, s.subharmonic_share_error, 2));
 }
 
 }  // namespace granwave

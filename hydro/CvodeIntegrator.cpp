@@ -41,8 +41,9 @@ struct CvodeIntegrator::Impl {
   double t = 0;
   int n = 0;
   std::string rhs_error;  // an exception escaping the RHS, reported after CVODE returns
-  // Right-hand sides refused as not finite (flag > 0: CVODE retries with a shorter step), and
-  // the first component that was not, in the state or in its rate, of the last one refused.
+  // Right-hand sides refused as not finite (flag > 0: CVODE retries with a shorter step) since
+  // the last output time, and the first component that was not, in the state or else in its
+  // rate, of the last one refused (a refused state leaves the rates unwritten).
   long refused = 0;
   int refused_component = -1;
   bool refused_state = false;
@@ -110,12 +111,12 @@ struct CvodeIntegrator::Impl {
 
   void noteRefused(const double* y, const double* yd) {
     ++refused;
-    for (int k = 0; k < n; ++k)
-      if (!std::isfinite(y[k]) || !std::isfinite(yd[k])) {
-        refused_component = k;
-        refused_state = !std::isfinite(y[k]);
-        return;
-      }
+    refused_component = -1;
+    for (int k = 0; k < n && refused_component < 0; ++k)
+      if (!std::isfinite(y[k])) refused_component = k;
+    refused_state = refused_component >= 0;
+    for (int k = 0; k < n && refused_component < 0; ++k)
+      if (!std::isfinite(yd[k])) refused_component = k;
   }
 
   // The component with the largest weighted local error estimate, -1 if unavailable or if
@@ -156,7 +157,8 @@ struct CvodeIntegrator::Impl {
           << (name ? name(worst) : "component " + std::to_string(worst));
     if (!rhs_error.empty()) msg << "; right-hand side: " << rhs_error;
     if (refused > 0 && refused_component >= 0)
-      msg << "; " << refused << " right-hand side(s) not finite, the last in the "
+      msg << "; " << refused
+          << " right-hand side(s) not finite since the last output, the last in the "
           << (refused_state ? "state" : "rate") << " of "
           << (name ? name(refused_component) : "component " + std::to_string(refused_component));
     throw CvodeError(msg.str(), call, flag, tcur, h, worst);
@@ -272,6 +274,8 @@ CvodeIntegrator& CvodeIntegrator::operator=(CvodeIntegrator&&) noexcept = defaul
 void CvodeIntegrator::advanceTo(double tout) {
   Impl& m = *impl_;
   m.rhs_error.clear();
+  m.refused = 0;
+  m.refused_component = -1;
   sunrealtype t = m.t;
   const int flag = CVode(m.cvode, tout, m.y, &t, CV_NORMAL);
   if (flag < 0) m.fail("CVode", flag);

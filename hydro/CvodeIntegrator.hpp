@@ -104,7 +104,7 @@ class CvodeIntegrator {
   const std::vector<double>& state() const;
   CvodeStats stats() const;
   // The component with the largest weighted local error estimate of the last step (-1 if
-  // unavailable): where the integrator spends its steps.
+  // unavailable or every estimate is zero): where the integrator spends its steps.
   int largestErrorComponent() const;
 
  private:

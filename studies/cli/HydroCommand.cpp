@@ -84,7 +84,7 @@ void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const s
   if (c.surface.available)
     fmt::print("{}", surfaceSpectrumLine(c.surface));
   else
-    fmt::print("surface spectrum none: {} cycles are too few for two windows\n", c.cycles);
+    fmt::print("surface spectrum none: no whole window of cycles in the run's second half\n");
   fmt::print("output          {} (ParaView: {})\n", out, xdmfSidecarPath(out));
 }
 

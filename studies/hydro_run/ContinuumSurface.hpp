@@ -1,14 +1,12 @@
 #pragma once
 // The surface of the 2D continuum's layer, measured as the particles' is (coarse_grain/
 // LayerSurface.hpp, layerSurfaceOfField): its area fraction on the surface's columns (one
-// diameter wide) and z bins, each bin the mean over its height of the cells of the continuum
-// column under the surface column's centre (a finite-volume cell's value is its average over
-// the column's width and between its node heights), then blurred by the particles' kernel and
-// crossed at half the bulk value. So the
+// diameter wide) and z bins, each bin the mean over its area of the continuum's cells (a
+// finite-volume cell's value is its average over its column's width and between its node
+// heights), then blurred by the particles' kernel and crossed at half the bulk value. So the
 // continuum's and the particles' surface spectra (coarse_grain/SurfaceWaveSpectrum.hpp) are one
 // measure on two models (docs/hydro.md, "The 2D model").
 #include "coarse_grain/LayerSurface.hpp"
-#include "coarse_grain/SurfaceRecorder.hpp"
 #include "hydro/HydroSimulation2D.hpp"
 
 namespace granwave {

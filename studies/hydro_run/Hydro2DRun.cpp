@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "coarse_grain/SurfaceRecorder.hpp"
 #include "hydro/Layer2DStart.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/hydro_run/ContinuumSurface.hpp"
@@ -104,7 +105,7 @@ Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_n
                               scene.container.periodic_x, scene.particles.diameter};
   SurfaceRecorderConfig rc;
   rc.records_per_cycle = o.samples_per_cycle;
-  rc.keep_cycles = o.cycles;
+  rc.keep_cycles = o.cycles - o.cycles / 2;
   rc.width = grid.width;
   rc.diameter = grid.diameter;
   rc.periodic_x = grid.periodic_x;

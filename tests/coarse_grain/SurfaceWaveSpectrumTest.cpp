@@ -175,9 +175,9 @@ TEST(SurfaceRecorder, KeepsWholeCyclesAndRestoresThroughACheckpoint) {
   EXPECT_EQ(whole.series(8).cycles, 2);
 }
 
-TEST(SurfaceRecorder, SurfacesMeasuredElsewhereAreKeptInPhaseOrderAndMustFitTheColumns) {
+TEST(SurfaceRecorder, SurfacesMeasuredElsewhereAreKeptInPhaseOrderAndMustFitTheRecorder) {
   // A continuum hands over its surfaces (record): a cycle's records in phase order make it
-  // whole; a record of the wrong column count is refused.
+  // whole; a record of the wrong column count, or outside a cycle's records, is refused.
   SurfaceRecorderConfig cfg;
   cfg.records_per_cycle = 4;
   cfg.keep_cycles = 3;
@@ -196,11 +196,13 @@ TEST(SurfaceRecorder, SurfacesMeasuredElsewhereAreKeptInPhaseOrderAndMustFitTheC
   LayerSurface narrow;
   narrow.profile.height.assign(9, 3 * d);
   EXPECT_THROW(r.record(4, 0, narrow), std::invalid_argument);
+  EXPECT_THROW(r.record(3, 4, flat), std::invalid_argument);   // records 0-3 of a cycle
+  EXPECT_THROW(r.record(-1, 0, flat), std::invalid_argument);  // no cycle before the run
 }
 
-TEST(SurfaceWaveSpectrum, ShortRunsGetTheLargestEvenWindowGivingTwo) {
+TEST(SurfaceWaveSpectrum, ShortRunsGetTheLargestEvenWindowThatFitsTwiceButAtLeastFour) {
   // 10 cycles when two windows of 10 fit; else the largest even window that fits twice, and
-  // never below 4 (the noise has W - 2 degrees of freedom).
+  // never below 4 (the noise has W - 2 degrees of freedom): under 8 cycles, one window.
   EXPECT_EQ(surfaceWindowCycles(30), 10);
   EXPECT_EQ(surfaceWindowCycles(20), 10);
   EXPECT_EQ(surfaceWindowCycles(19), 8);

@@ -83,8 +83,8 @@ TEST(RestingContactAlarm, RowRattlingAtNoGapRaisesTheAlarmAndIsPutToSleep) {
 TEST(RestingContactAlarm, RunsWithoutAnAlarmAreBitIdenticalToTheRuleOff) {
   // Until it is raised the alarm only counts: the paper's wet scene (the longest run of
   // enduring collisions over seeds 1-12 is 141, far below the alarm) ends exactly as with
-  // contact.sleep = "off". Its first 50 cycles: the landings, the enduring collisions and the
-  // period-2 state all occur in them.
+  // contact.sleep = "off". Its first 50 cycles (the same run up to 5 s, so the 141 bounds
+  // them too): the landings, the enduring collisions and the period-2 state all occur in them.
   const Scene s = paperFile("wet", {"run.seed=1", "run.duration=5"});
   EdSimulation with_alarm = simulationOf(engineConfig(s), s);
   with_alarm.run();

@@ -110,4 +110,8 @@ TEST_F(HydroCli, TwoDimensionalRunWritesTheSurfaceSpectrumOfItsSecondHalf) {
   EXPECT_EQ(f.readAttribute<std::int64_t>("/surface", "cycles"), 4);    // cycles 5-8 of 8
   EXPECT_EQ(f.readAttribute<std::int64_t>("/surface", "records_per_cycle"), 20);
   EXPECT_EQ(f.shape("/surface/recent_height"), (granwave::h5::Shape{80, 30}));
+  // A layer seeded with 1 % of noise in its column masses has no wave: its f/2 amplitude is
+  // far below the detector's threshold of 0.5 d.
+  EXPECT_LT(f.readAttribute<double>("/surface", "amplitude_d"), 0.1);
+  EXPECT_EQ(f.readAttribute<double>("/surface", "wave_fraction"), 0.0);
 }
