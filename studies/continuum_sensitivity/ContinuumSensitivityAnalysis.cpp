@@ -69,7 +69,10 @@ double cyclicDistance(double a, double b, double span) {
   return std::min(d, span - d);
 }
 
-double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, double span) {
+// The largest relative change of a matched front (kInf: a front appeared or vanished), and into
+// `sigma` the largest change of a matched resolved front over the fits' combined error.
+double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, double span,
+                   double& sigma) {
   if (base.fronts.empty() != run.fronts.empty()) return kInf;
   double worst = 0;
   for (const SensitivityFront& b : base.fronts) {
@@ -80,7 +83,13 @@ double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, 
            cyclicDistance(r.start, b.start, span) < cyclicDistance(match->start, b.start, span)))
         match = &r;
     if (!match || match->resolved != b.resolved || match->bulk != b.bulk) return kInf;
-    if (b.resolved) worst = std::max(worst, std::abs(match->speed - b.speed) / b.speed);
+    if (!b.resolved) continue;
+    worst = std::max(worst, std::abs(match->speed - b.speed) / b.speed);
+    const double e = std::hypot(b.fit_error, match->fit_error);
+    if (e > 0) {
+      const double z = std::abs(match->speed - b.speed) / e;
+      sigma = std::isnan(sigma) ? z : std::max(sigma, z);
+    }
   }
   return worst;
 }
@@ -106,8 +115,8 @@ SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance) 
   const double dt = c.lab.time.size() > 1 ? c.lab.time[1] - c.lab.time[0] : 0;
   for (const TrackedFront& f : trackFronts(frontProfiles(c.lab.pooled, c.lab.z), dt))
     a.fronts.push_back({c.lab.phase[static_cast<std::size_t>(f.first_phase)], f.resolved,
-                        f.resolved ? f.speed : f.speed_lower_bound, f.bulk_crossing > 0,
-                        f.bulk_speed_lower_bound});
+                        f.resolved ? f.speed : f.speed_lower_bound, f.resolved ? f.fit_error : 0.0,
+                        f.bulk_crossing > 0, f.bulk_speed_lower_bound});
   return a;
 }
 
@@ -122,7 +131,7 @@ SensitivityChange sensitivityChange(const SensitivityAnswer& base, const Sensiti
   const double excursion = std::max(base.com_high - base.com_low, 1e-12);
   c.com = std::max(std::abs(run.com_low - base.com_low), std::abs(run.com_high - base.com_high)) /
           excursion;
-  c.front = frontChange(base, run, std::max(1, base.period));
+  c.front = frontChange(base, run, std::max(1, base.period), c.front_sigma);
   c.within = c.same_period && c.com < tolerance && c.front < tolerance;
   return c;
 }
@@ -156,7 +165,8 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
     f.writeStringAttribute(g, "name", config.cases[k].name);
     f.writeStringAttribute(g, "law", kLawNames[config.cases[k].law]);
     std::vector<std::string> parameter;
-    std::vector<double> factor, period, solver_period, low, high, com, front, within, cpu, fastest;
+    std::vector<double> factor, period, solver_period, low, high, com, front, sigma, within, cpu,
+        fastest, fastest_error;
     for (std::size_t v = 0; v < c.answers.size(); ++v) {
       const SensitivityAnswer& a = c.answers[v];
       const SensitivityChange& d = c.changes[v];
@@ -169,12 +179,17 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
       high.push_back(a.ok ? a.com_high : std::nan(""));
       com.push_back(d.com);
       front.push_back(d.front);
+      sigma.push_back(d.front_sigma);
       within.push_back(d.within ? 1 : 0);
       cpu.push_back(a.cpu_seconds);
-      double fast = std::nan("");
+      double fast = std::nan(""), fast_error = std::nan("");
       for (const SensitivityFront& fr : a.fronts)
-        if (fr.resolved) fast = std::isnan(fast) ? fr.speed : std::max(fast, fr.speed);
+        if (fr.resolved && (std::isnan(fast) || fr.speed > fast)) {
+          fast = fr.speed;
+          fast_error = fr.fit_error;
+        }
       fastest.push_back(fast);
+      fastest_error.push_back(fast_error);
     }
     f.writeStringArrayAttribute(g, "parameters", parameter);
     putSeries(f, g + "/factor", factor, "1");
@@ -184,7 +199,9 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
     putSeries(f, g + "/com_high", high, "m");
     putSeries(f, g + "/com_change", com, "1");
     putSeries(f, g + "/front_change", front, "1");
+    putSeries(f, g + "/front_change_sigma", sigma, "1");
     putSeries(f, g + "/fastest_front", fastest, "m s-1");
+    putSeries(f, g + "/fastest_front_error", fastest_error, "m s-1");
     putSeries(f, g + "/within_tolerance", within, "1");
     putSeries(f, g + "/cpu_seconds", cpu, "s");
     putValue(f, g, "variants_within", c.within);

@@ -2,6 +2,7 @@
 // The numbers of the continuum-sensitivity study: per case, each run's answers (period,
 // centre-of-mass range, impact fronts) and how far each moved from the base run's when one
 // parameter was scaled; written under /results/continuum_sensitivity (docs/studies.md).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct SensitivityFront {
   double start = 0;  // t/T of its first phase within the window
   bool resolved = false;
   double speed = 0;  // m/s (resolved), else the lower bound of its speed
+  // m/s, the standard error of the straight-line fit through its heights (resolved fronts):
+  // how well the window's sampling of a deterministic run fixes its speed.
+  double fit_error = 0;
   // It crossed a packed bottom within one phase before it was tracked: the speed that takes
   // is above bulk_speed (m/s), a bound set by the sampling, so it is compared as present or
   // absent, not by value.
@@ -40,9 +44,12 @@ struct SensitivityAnswer {
 // How far a variant moved from its case's base run.
 struct SensitivityChange {
   bool same_period = false;
-  double com = 0;       // max(|d low|, |d high|) / (base high - base low)
-  double front = 0;     // largest relative change of a matched front (0: both faster than the
-                        // sampling or both without fronts; inf: a front appeared or vanished)
+  double com = 0;    // max(|d low|, |d high|) / (base high - base low)
+  double front = 0;  // largest relative change of a matched front (0: both faster than the
+                     // sampling or both without fronts; inf: a front appeared or vanished)
+  // The largest change of a matched resolved front in units of the two fits' combined error,
+  // sqrt(e_base^2 + e_run^2): below ~2 the change is within what the fits fix (NaN: none).
+  double front_sigma = std::numeric_limits<double>::quiet_NaN();
   bool within = false;  // same period, com and front below the tolerance
 };
 

@@ -20,6 +20,12 @@ std::string percent(double change) {
   return fmt::format("{:.1f} %", 100 * change);
 }
 
+// The front's change, and in units of the fits' combined error where both fronts have one.
+std::string frontChangeText(const SensitivityChange& c) {
+  if (!std::isfinite(c.front) || std::isnan(c.front_sigma)) return percent(c.front);
+  return fmt::format("{} ({:.1f} sigma)", percent(c.front), c.front_sigma);
+}
+
 std::string periodText(const SensitivityAnswer& a) {
   if (!a.ok) return "failed";
   const std::string p = a.period > 0 ? fmt::format("{}T", a.period) : "not periodic";
@@ -35,7 +41,8 @@ std::string frontsText(const SensitivityAnswer& a) {
   for (const SensitivityFront& f : a.fronts) {
     if (!s.empty()) s += ", ";
     if (f.bulk) s += fmt::format("bulk > {} then ", formatNumber(f.bulk_speed, 0));
-    s += f.resolved ? formatNumber(f.speed, 2) : "> " + formatNumber(f.speed, 0);
+    s += f.resolved ? formatNumber(f.speed, 2) + " +- " + formatNumber(f.fit_error, 2)
+                    : "> " + formatNumber(f.speed, 0);
   }
   return s;
 }
@@ -56,7 +63,8 @@ Table caseTable(const ContinuumSensitivityConfig& config, std::size_t k,
       "per cycle above the plate (in diameters), the largest relative change of either (of the "
       "base's excursion), the velocity-jump fronts of the window (m/s; '> x': faster than the "
       "sampling resolves, with its bound; 'bulk > x then': the impact crossed the packed bottom "
-      "within one phase, faster than x) and the largest relative change of a matched front. "
+      "within one phase, faster than x; +- the fit's standard error) and the largest relative "
+      "change of a matched front, with that change in units of the two fits' combined error. "
       "Within tolerance: the same period and both changes below {:.0f} %.",
       100 * config.tolerance);
   t.columns = {"run",    "period", "centre of mass (d)", "change", "fronts (m/s)", "change",
@@ -68,7 +76,7 @@ Table caseTable(const ContinuumSensitivityConfig& config, std::size_t k,
     t.rows.push_back(
         {variantName(config.variants[k][v]), periodText(a),
          a.ok ? fmt::format("{:.2f}-{:.2f}", a.com_low / d, a.com_high / d) : a.failure,
-         base ? "(base)" : percent(ch.com), frontsText(a), base ? "(base)" : percent(ch.front),
+         base ? "(base)" : percent(ch.com), frontsText(a), base ? "(base)" : frontChangeText(ch),
          base ? "(base)" : (ch.within ? "yes" : "no"), formatNumber(a.cpu_seconds, 1)});
   }
   return t;

@@ -45,4 +45,22 @@ TEST_F(ContinuumSensitivityResults, NoParameterHalvedOrDoubledMovesTheAnswersByF
   EXPECT_EQ(study().value(kCase, "variants_within"), 14.0);
 }
 
+TEST_F(ContinuumSensitivityResults, EveryFastestFrontHasAFitErrorSmallerThanItsSpeed) {
+  // The fit through a front's heights over its phases (at least 3) has a standard error; a
+  // front the sampling resolves moves by more than that over its window.
+  const auto speed = study().series(kCase + "/fastest_front");
+  const auto error = study().series(kCase + "/fastest_front_error");
+  const auto sigma = study().series(kCase + "/front_change_sigma");
+  ASSERT_EQ(error.size(), speed.size());
+  ASSERT_EQ(sigma.size(), speed.size());
+  if (!std::isnan(sigma[0])) {
+    EXPECT_EQ(sigma[0], 0.0);  // the base against itself
+  }
+  for (std::size_t v = 0; v < speed.size(); ++v) {
+    if (std::isnan(speed[v])) continue;
+    EXPECT_GE(error[v], 0.0) << "variant " << v;
+    EXPECT_LT(error[v], speed[v]) << "variant " << v;
+  }
+}
+
 }  // namespace
