@@ -70,11 +70,12 @@ double cyclicDistance(double a, double b, double span) {
 }
 
 // The largest relative change of a matched front (kInf: a front appeared or vanished), and into
-// `sigma` the largest change of a matched resolved front over the fits' combined error.
+// `sigma` that front's change over its fits' combined error (NaN: no such front or no errors).
 double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, double span,
                    double& sigma) {
+  sigma = std::numeric_limits<double>::quiet_NaN();
   if (base.fronts.empty() != run.fronts.empty()) return kInf;
-  double worst = 0;
+  double worst = 0, worst_sigma = sigma;
   for (const SensitivityFront& b : base.fronts) {
     const SensitivityFront* match = nullptr;
     for (const SensitivityFront& r : run.fronts)
@@ -84,13 +85,14 @@ double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, 
         match = &r;
     if (!match || match->resolved != b.resolved || match->bulk != b.bulk) return kInf;
     if (!b.resolved) continue;
-    worst = std::max(worst, std::abs(match->speed - b.speed) / b.speed);
+    const double change = std::abs(match->speed - b.speed) / b.speed;
+    if (change < worst) continue;
+    worst = change;
     const double e = std::hypot(b.fit_error, match->fit_error);
-    if (e > 0) {
-      const double z = std::abs(match->speed - b.speed) / e;
-      sigma = std::isnan(sigma) ? z : std::max(sigma, z);
-    }
+    worst_sigma =
+        e > 0 ? std::abs(match->speed - b.speed) / e : std::numeric_limits<double>::quiet_NaN();
   }
+  sigma = worst_sigma;
   return worst;
 }
 

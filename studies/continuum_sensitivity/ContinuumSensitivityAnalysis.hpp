@@ -47,15 +47,18 @@ struct SensitivityChange {
   double com = 0;    // max(|d low|, |d high|) / (base high - base low)
   double front = 0;  // largest relative change of a matched front (0: both faster than the
                      // sampling or both without fronts; inf: a front appeared or vanished)
-  // The largest change of a matched resolved front in units of the two fits' combined error,
-  // sqrt(e_base^2 + e_run^2): below ~2 the change is within what the fits fix (NaN: none).
+  // The change of the front with the largest relative change in units of its two fits'
+  // combined error, sqrt(e_base^2 + e_run^2) (NaN: no resolved front matched, or no errors).
+  // A rough guide, not a Gaussian significance: a fit through 3-4 phases has 1-2 degrees of
+  // freedom, and a deterministic run's residuals are the sampling's, not noise; of order 1 or
+  // below, the change is within what the fits fix.
   double front_sigma = std::numeric_limits<double>::quiet_NaN();
   bool within = false;  // same period, com and front below the tolerance
 };
 
 struct SensitivityCaseResult {
   std::vector<SensitivityAnswer> answers;  // [variant], base first
-  std::vector<SensitivityChange> changes;  // [variant], base first (all zero)
+  std::vector<SensitivityChange> changes;  // [variant], base first (zero changes)
   int within = 0, compared = 0;
 };
 

@@ -64,7 +64,8 @@ Table caseTable(const ContinuumSensitivityConfig& config, std::size_t k,
       "base's excursion), the velocity-jump fronts of the window (m/s; '> x': faster than the "
       "sampling resolves, with its bound; 'bulk > x then': the impact crossed the packed bottom "
       "within one phase, faster than x; +- the fit's standard error) and the largest relative "
-      "change of a matched front, with that change in units of the two fits' combined error. "
+      "change of a matched front, with that front's change in units of its two fits' combined "
+      "error (a rough guide: of order 1 or below, within what the fits fix). "
       "Within tolerance: the same period and both changes below {:.0f} %.",
       100 * config.tolerance);
   t.columns = {"run",    "period", "centre of mass (d)", "change", "fronts (m/s)", "change",

@@ -45,21 +45,23 @@ TEST_F(ContinuumSensitivityResults, NoParameterHalvedOrDoubledMovesTheAnswersByF
   EXPECT_EQ(study().value(kCase, "variants_within"), 14.0);
 }
 
-TEST_F(ContinuumSensitivityResults, EveryFastestFrontHasAFitErrorSmallerThanItsSpeed) {
-  // The fit through a front's heights over its phases (at least 3) has a standard error; a
-  // front the sampling resolves moves by more than that over its window.
+TEST_F(ContinuumSensitivityResults, FrontsAreFittedToAFewPercentAndNoChangeReachesTwoSigma) {
+  // The 20-row layer's impact front climbs about ten cells over the phases it is fitted
+  // through (400 per cycle): its speed's fit error is a few per cent (measured 2.9 %), below
+  // 5 %. With both fits' errors near 3 % their combined error is near 4 %, so a change under
+  // the 5 % tolerance is under about 1.3 sigma: none may reach 2.
   const auto speed = study().series(kCase + "/fastest_front");
   const auto error = study().series(kCase + "/fastest_front_error");
   const auto sigma = study().series(kCase + "/front_change_sigma");
   ASSERT_EQ(error.size(), speed.size());
   ASSERT_EQ(sigma.size(), speed.size());
-  if (!std::isnan(sigma[0])) {
-    EXPECT_EQ(sigma[0], 0.0);  // the base against itself
-  }
+  ASSERT_FALSE(std::isnan(speed[0]));  // the base has a resolved front
+  EXPECT_EQ(sigma[0], 0.0);            // the base against itself
   for (std::size_t v = 0; v < speed.size(); ++v) {
-    if (std::isnan(speed[v])) continue;
-    EXPECT_GE(error[v], 0.0) << "variant " << v;
-    EXPECT_LT(error[v], speed[v]) << "variant " << v;
+    ASSERT_FALSE(std::isnan(speed[v])) << "variant " << v;
+    EXPECT_GT(error[v], 0.0) << "variant " << v;
+    EXPECT_LT(error[v], 0.05 * speed[v]) << "variant " << v;
+    EXPECT_LT(sigma[v], 2.0) << "variant " << v;
   }
 }
 
