@@ -113,7 +113,9 @@ Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_n
   hydro::HydroSimulation2D sim(*op, o);
   const hydro::Hydro2DResult result =
       sim.run([&](const hydro::Hydro2DPhase& ph, int cycle, int phase) {
-        surface.record(cycle, phase, continuumSurface(ph, grid, rc.surface));
+        // Only the second half is analysed: the first is not measured at all.
+        if (cycle >= o.cycles / 2)
+          surface.record(cycle, phase, continuumSurface(ph, grid, rc.surface));
       });
   Hydro2DRunContent content = hydro2DRunContent(scene, *op, result, o);
   const SurfaceSeries series = surface.series(o.cycles / 2);

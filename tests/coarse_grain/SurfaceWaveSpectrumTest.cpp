@@ -40,6 +40,17 @@ SurfaceSeries series(int n, bool periodic, int cycles, Shape shape) {
   return s;
 }
 
+// A recorder of 4 records per cycle over 10 columns of width d, keeping `keep` cycles.
+SurfaceRecorderConfig recorderConfig(int keep, bool periodic) {
+  SurfaceRecorderConfig cfg;
+  cfg.records_per_cycle = 4;
+  cfg.keep_cycles = keep;
+  cfg.width = 10 * d;
+  cfg.diameter = d;
+  cfg.periodic_x = periodic;
+  return cfg;
+}
+
 }  // namespace
 
 TEST(SurfaceWaveSpectrum, StandingSubharmonicWaveGivesItsModeAmplitudeAndFullShare) {
@@ -134,12 +145,7 @@ TEST(SurfaceRecorder, KeepsWholeCyclesAndRestoresThroughACheckpoint) {
   // A flat layer of 3 rows whose plate moves: h stays the layer's thickness at every record.
   // The recorder saved after 7 cycles and restored into a new one records what one that saw
   // the whole run does.
-  SurfaceRecorderConfig cfg;
-  cfg.records_per_cycle = 4;
-  cfg.keep_cycles = 5;
-  cfg.width = 10 * d;
-  cfg.diameter = d;
-  cfg.periodic_x = true;
+  const SurfaceRecorderConfig cfg = recorderConfig(5, true);
   const auto snapshot = [&](std::uint64_t step) {
     Snapshot s;
     s.step = step;
@@ -178,12 +184,7 @@ TEST(SurfaceRecorder, KeepsWholeCyclesAndRestoresThroughACheckpoint) {
 TEST(SurfaceRecorder, SurfacesMeasuredElsewhereAreKeptInPhaseOrderAndMustFitTheRecorder) {
   // A continuum hands over its surfaces (record): a cycle's records in phase order make it
   // whole; a record of the wrong column count, or outside a cycle's records, is refused.
-  SurfaceRecorderConfig cfg;
-  cfg.records_per_cycle = 4;
-  cfg.keep_cycles = 3;
-  cfg.width = 10 * d;
-  cfg.diameter = d;
-  SurfaceRecorder r(cfg);
+  SurfaceRecorder r(recorderConfig(3, false));
   LayerSurface flat;
   flat.profile.height.assign(10, 3 * d);
   for (long c = 0; c < 4; ++c)
