@@ -35,6 +35,12 @@ struct CvodeIntegrator::Impl {
   void* cvode = nullptr;
   RightHandSide f;
   BandJacobian jacobian;
+  std::function<void(double, const double*, double*)> event_functions;
+  std::function<void(double, std::vector<double>&, const std::vector<int>&)> on_event;
+  int events = 0;
+  long max_events = 0, handled = 0;
+  // The counters of the integrations before the last restart (CVodeReInit zeroes CVODE's).
+  CvodeStats carried;
   KrylovPreconditioner preconditioner;
   ComponentName name;
   std::vector<double> out;
@@ -70,6 +76,33 @@ struct CvodeIntegrator::Impl {
       return -1;
     }
   }
+
+  static int roots(sunrealtype t, N_Vector y, sunrealtype* g, void* user) {
+    auto* self = static_cast<Impl*>(user);
+    try {
+      self->event_functions(t, N_VGetArrayPointer(y), g);
+      return 0;
+    } catch (const std::exception& e) {
+      self->rhs_error = e.what();
+      return -1;
+    }
+  }
+
+  // Handles the event CVODE stopped at and restarts the integration from its state.
+  void handleEvent(double t_root) {
+    std::vector<int> found(static_cast<std::size_t>(events), 0);
+    check(CVodeGetRootInfo(cvode, found.data()), "CVodeGetRootInfo");
+    double* yp = N_VGetArrayPointer(y);
+    std::copy(yp, yp + n, out.begin());
+    on_event(t_root, out, found);
+    std::copy(out.begin(), out.end(), yp);
+    carried = current();
+    check(CVodeReInit(cvode, t_root, y), "CVodeReInit");
+    ++handled;
+  }
+
+  // The counters since the start: those carried over restarts plus CVODE's own.
+  CvodeStats current() const;
 
   static int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
                  N_Vector) {
@@ -264,6 +297,15 @@ CvodeIntegrator::CvodeIntegrator(RightHandSide f, double t0, const std::vector<d
     std::copy(o.constraints.begin(), o.constraints.end(), N_VGetArrayPointer(m.constraints));
     m.check(CVodeSetConstraints(m.cvode, m.constraints), "CVodeSetConstraints");
   }
+  if (o.events > 0) {
+    if (!o.event_functions || !o.on_event)
+      throw std::invalid_argument("CVODE events: event_functions and on_event are both needed");
+    m.events = o.events;
+    m.event_functions = o.event_functions;
+    m.on_event = o.on_event;
+    m.max_events = o.max_events;
+    m.check(CVodeRootInit(m.cvode, o.events, Impl::roots), "CVodeRootInit");
+  }
   m.out.assign(y0.begin(), y0.end());
 }
 
@@ -277,9 +319,19 @@ void CvodeIntegrator::advanceTo(double tout) {
   m.refused = 0;
   m.refused_component = -1;
   sunrealtype t = m.t;
-  const int flag = CVode(m.cvode, tout, m.y, &t, CV_NORMAL);
-  if (flag < 0) m.fail("CVode", flag);
-  m.t = t;
+  long events = 0;
+  for (;;) {
+    const int flag = CVode(m.cvode, tout, m.y, &t, CV_NORMAL);
+    if (flag < 0) m.fail("CVode", flag);
+    m.t = t;
+    if (flag != CV_ROOT_RETURN) break;
+    if (++events > m.max_events)
+      throw CvodeError("more than " + std::to_string(m.max_events) +
+                           " events before t = " + std::to_string(tout) +
+                           " s (the last at t = " + std::to_string(t) + " s): an event chatters",
+                       "CVode", CV_ROOT_RETURN, t, m.current().last_step, -1);
+    m.handleEvent(t);
+  }
   const double* y = N_VGetArrayPointer(m.y);
   std::copy(y, y + m.n, m.out.begin());
 }
@@ -289,8 +341,11 @@ const std::vector<double>& CvodeIntegrator::state() const { return impl_->out; }
 
 int CvodeIntegrator::largestErrorComponent() const { return impl_->worstComponent(); }
 
-CvodeStats CvodeIntegrator::stats() const {
-  const Impl& m = *impl_;
+CvodeStats CvodeIntegrator::stats() const { return impl_->current(); }
+long CvodeIntegrator::eventCount() const { return impl_->handled; }
+
+CvodeStats CvodeIntegrator::Impl::current() const {
+  const Impl& m = *this;
   CvodeStats s;
   CVodeGetNumSteps(m.cvode, &s.steps);
   CVodeGetNumRhsEvals(m.cvode, &s.rhs_evals);
@@ -307,6 +362,18 @@ CvodeStats CvodeIntegrator::stats() const {
     CVodeGetNumPrecEvals(m.cvode, &s.prec_evals);
     CVodeGetNumPrecSolves(m.cvode, &s.prec_solves);
   }
+  const CvodeStats& c = m.carried;
+  s.steps += c.steps;
+  s.rhs_evals += c.rhs_evals;
+  s.lin_rhs_evals += c.lin_rhs_evals;
+  s.jac_evals += c.jac_evals;
+  s.err_test_fails += c.err_test_fails;
+  s.nonlin_conv_fails += c.nonlin_conv_fails;
+  s.nonlin_iters += c.nonlin_iters;
+  s.lin_iters += c.lin_iters;
+  s.lin_conv_fails += c.lin_conv_fails;
+  s.prec_evals += c.prec_evals;
+  s.prec_solves += c.prec_solves;
   return s;
 }
 

@@ -50,6 +50,14 @@ struct CvodeOptions {
   KrylovPreconditioner preconditioner;  // BdfKrylov: empty = CVODE's band preconditioner
   int krylov_dimension = 0;             // BdfKrylov: GMRES's largest subspace (0 = 5)
   double linear_tolerance_factor = 0;   // BdfKrylov: CVodeSetEpsLin (0 = CVODE's 0.05)
+  // Events (CVODE's root finding): `events` functions g_k(t, y) written by event_functions,
+  // located where one changes sign. At a root on_event(t, y, found) (found[k] != 0 for each
+  // g_k that crossed) may change y and whatever the right-hand side reads besides y; the
+  // integration then restarts from (t, y) (CVodeReInit: no step's history crosses a jump).
+  int events = 0;
+  std::function<void(double t, const double* y, double* g)> event_functions;
+  std::function<void(double t, std::vector<double>& y, const std::vector<int>& found)> on_event;
+  long max_events = 1000;  // per advanceTo(): more is a chattering event, an error
 };
 
 struct CvodeStats {
@@ -98,8 +106,10 @@ class CvodeIntegrator {
   CvodeIntegrator(const CvodeIntegrator&) = delete;
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
-  // Integrates to tout (normal mode: interpolated output at tout). Throws CvodeError.
+  // Integrates to tout (normal mode: interpolated output at tout), handling the events met
+  // on the way. Throws CvodeError.
   void advanceTo(double tout);
+  long eventCount() const;  // events handled since the start
   double time() const;
   const std::vector<double>& state() const;
   CvodeStats stats() const;

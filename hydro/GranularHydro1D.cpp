@@ -134,30 +134,57 @@ void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
 }
 
 template <class S>
-int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) const {
+std::pair<S, S> GranularHydro1D::wallReactions(double t, const Workspace<S>& w) const {
+  // A held boundary node (half a cell) at rest: the wall balances its weight and the stress
+  // of its cell, plate below node 0 and lid above node N.
+  const double weight = 0.5 * m_c_ * effectiveGravity(t);
+  return {w.stress[0] + weight, w.stress[g_.cells - 1] - weight};
+}
+
+template <class S>
+std::pair<WallExchange<S>, WallExchange<S>> GranularHydro1D::wallExchanges(double t, const S* U,
+                                                                           const Workspace<S>& w,
+                                                                           WallHold hold) const {
+  const int N = g_.cells;
+  if (hardWalls()) {
+    const S zero = constantLike(U[0], 0.0);
+    const auto [plate, lid] = wallReactions(t, w);
+    // A held node's cell loses the particles' wall collisions' energy, as in the spring's
+    // contact; the landing's loss of the node's motion is an event (wallEvent).
+    const auto held = [&](bool on, const S& reaction, const LocalState<S>& l) {
+      return on ? WallExchange<S>{reaction, zero, l.wall_loss * l.p_kinetic}
+                : WallExchange<S>{zero, zero, zero};
+    };
+    return {held(hold.plate, plate, w.local[0]), held(hold.lid, lid, w.local[N - 1])};
+  }
+  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
+  return {wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0], w.rho[0], sigma,
+                       scale, u_width, 0.5 * m_c_, numerics_),
+          wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
+                       w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_, numerics_)};
+}
+
+template <class S>
+int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w, WallHold hold) const {
   for (int k = 0; k < layerSize(); ++k)
     if (!std::isfinite(value(U[k]))) return 1;
   for (int k = layerSize(); k < size(); ++k) dU[k] = constantLike(U[0], 0.0);  // quadratures
   const int N = g_.cells;
-  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
   cellStates(U, w);
   heatFluxes<S>(N, w);
-  const WallExchange<S> plate =
-      wallExchange(U[heightIndex(0)], S(-U[velocityIndex(0)]), w.local[0], w.rho[0], sigma, scale,
-                   u_width, 0.5 * m_c_, numerics_);
-  const WallExchange<S> lid =
-      wallExchange(S(g_.height - U[heightIndex(N)]), U[velocityIndex(N)], w.local[N - 1],
-                   w.rho[N - 1], sigma, scale, u_width, 0.5 * m_c_, numerics_);
+  const auto [plate, lid] = wallExchanges(t, U, w, hold);
   w.heat[0] = -plate.loss;  // the energy the collisions take leaves through the walls
   w.heat[N] = lid.loss;
   const double geff = effectiveGravity(t);
-  // Nodes: the stress below pushes up, the stress above pushes down.
+  // Nodes: the stress below pushes up, the stress above pushes down; a held node rests.
   for (int j = 0; j <= N; ++j) {
     const S below = j == 0 ? plate.stress : w.stress[j - 1];
     const S above = j == N ? lid.stress : w.stress[j];
     const double mass = j == 0 || j == N ? 0.5 * m_c_ : m_c_;
     dU[heightIndex(j)] = U[velocityIndex(j)];
     dU[velocityIndex(j)] = (below - above) / mass - geff;
+    if ((j == 0 && hold.plate) || (j == N && hold.lid))
+      dU[heightIndex(j)] = dU[velocityIndex(j)] = constantLike(U[0], 0.0);
   }
   // Cells: work of the kinetic pressure and the viscosities, heat conduction, cooling.
   for (int i = 0; i < N; ++i) {
@@ -182,17 +209,12 @@ int GranularHydro1D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   return 0;
 }
 
-GranularHydro1D::EnergyRates GranularHydro1D::energyRates(double t, const double* U) const {
+GranularHydro1D::EnergyRates GranularHydro1D::energyRates(double t, const double* U,
+                                                          WallHold hold) const {
   Workspace<double>& w = *values_;
   const int N = g_.cells;
-  const double sigma = model_.sigma, scale = reg_.contact_scale, u_width = reg_.u_width;
   cellStates(U, w);
-  const WallExchange<double> plate =
-      wallExchange(U[heightIndex(0)], -U[velocityIndex(0)], w.local[0], w.rho[0], sigma, scale,
-                   u_width, 0.5 * m_c_, numerics_);
-  const WallExchange<double> lid =
-      wallExchange(g_.height - U[heightIndex(N)], U[velocityIndex(N)], w.local[N - 1], w.rho[N - 1],
-                   sigma, scale, u_width, 0.5 * m_c_, numerics_);
+  const auto [plate, lid] = wallExchanges(t, U, w, hold);
   EnergyRates r;
   // The plate pushes node 0 up and the lid pushes node N down; both move with the plate.
   r.plate_work = (plate.stress - lid.stress) * g_.plateVelocity(t);
@@ -223,7 +245,69 @@ double GranularHydro1D::labEnergy(double t, const double* U) const {
 }
 
 double GranularHydro1D::contactEnergy(double gap) const {
+  if (hardWalls()) return 0;  // a hard wall stores nothing
   return wallContactEnergy(gap, model_.sigma, reg_.contact_scale, numerics_);
+}
+
+void GranularHydro1D::wallEvents(double t, const double* U, WallHold hold, double* g) const {
+  const int N = g_.cells;
+  if (hold.plate || hold.lid) cellStates(U, *values_);
+  const auto [plate, lid] =
+      hold.plate || hold.lid ? wallReactions(t, *values_) : std::pair<double, double>{0, 0};
+  // A free node's root is at 1e-9 sigma past its wall, not at it: a node released at the wall
+  // starts with a non-zero function, which CVODE would otherwise hold inactive until it moves
+  // and so miss its return (the landing resets it to the wall).
+  const double past = 1e-9 * model_.sigma;
+  g[0] = hold.plate ? plate : U[heightIndex(0)] + past;
+  g[1] = hold.lid ? lid : g_.height - U[heightIndex(N)] + past;
+}
+
+GranularHydro1D::WallHold GranularHydro1D::wallEvent(double t, std::vector<double>& U,
+                                                     WallHold hold,
+                                                     const std::vector<int>& found) const {
+  const int N = g_.cells;
+  // The node lands completely inelastically, as the layer does (its particles' bounce is the
+  // wall collisions' loss): its kinetic energy relative to the wall (half a cell's mass) heats
+  // the wall cell, and the wall's impulse (m_c/2) |u| does the work -(m_c/2) u v_b on it in the
+  // lab frame (the plate's work, in the budget), so the lab-frame energy changes by that work.
+  const auto land = [&](int node, int cell) {
+    const double u = U[velocityIndex(node)];
+    const double theta = temperature(U.data(), cell) + 0.25 * u * u;  // 0.5 (m_c/2) u^2 / m_c
+    U[temperatureIndex(cell)] = temperatureUnknown(theta);
+    if (energy_budget_) U[budgetIndex(0)] -= 0.5 * m_c_ * u * g_.plateVelocity(t);
+    U[velocityIndex(node)] = 0;
+    U[heightIndex(node)] = node == 0 ? 0.0 : g_.height;
+  };
+  WallHold next = hold;
+  if (found[0] != 0) {
+    next.plate = !hold.plate;
+    if (next.plate) land(0, 0);
+  }
+  if (found[1] != 0) {
+    next.lid = !hold.lid;
+    if (next.lid) land(N, N - 1);
+  }
+  // A node that lands where its wall would pull on it leaves again at once.
+  cellStates(U.data(), *values_);
+  const auto [plate, lid] = wallReactions(t, *values_);
+  next.plate = next.plate && plate > 0;
+  next.lid = next.lid && lid > 0;
+  return next;
+}
+
+bool GranularHydro1D::withinWalls(const double* U) const {
+  if (!hardWalls()) return true;
+  const double slack = 1e-6 * model_.sigma;
+  return U[heightIndex(0)] >= -slack && U[heightIndex(g_.cells)] <= g_.height + slack;
+}
+
+GranularHydro1D::WallHold GranularHydro1D::startingHold(double t, const double* U) const {
+  if (!hardWalls()) return {};
+  cellStates(U, *values_);
+  const auto [plate, lid] = wallReactions(t, *values_);
+  const double touch = 1e-12 * model_.sigma;
+  return {U[heightIndex(0)] <= touch && plate > 0,
+          U[heightIndex(g_.cells)] >= g_.height - touch && lid > 0};
 }
 
 GranularHydro1D::CellView GranularHydro1D::cellView(const double* U, int i) const {
@@ -241,10 +325,10 @@ double GranularHydro1D::spacingFor(double rho_eff) const {
 
 double GranularHydro1D::effectiveTemperature(double theta) const { return theta + reg_.theta_min; }
 
-int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) const {
-  const int status = residual(t, U, dUdt, *values_);
+int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt, WallHold hold) const {
+  const int status = residual(t, U, dUdt, *values_, hold);
   if (status != 0 || !energy_budget_) return status;
-  const EnergyRates r = energyRates(t, U);
+  const EnergyRates r = energyRates(t, U, hold);
   const double rates[kBudgetTerms] = {r.plate_work, r.collisional_loss, r.friction_loss,
                                       r.wall_loss, r.side_wall_loss};
   for (int k = 0; k < kBudgetTerms; ++k) dUdt[budgetIndex(k)] = rates[k];
@@ -253,13 +337,13 @@ int GranularHydro1D::rightHandSide(double t, const double* U, double* dUdt) cons
 
 template <int Colours>
 int GranularHydro1D::jacobianWith(double t, const double* U, const BandWriter& write,
-                                  JetWorkspace<Colours>& j) const {
+                                  JetWorkspace<Colours>& j, WallHold hold) const {
   const int n = size(), K = vars_;
   for (int k = 0; k < n; ++k) {
     const int colour = (k / K) % kBlockColours * K + k % K;
     j.U[k] = Jet<Colours>(U[k], Colours, colour);
   }
-  if (residual(t, j.U.data(), j.dU.data(), j.w) != 0) return 1;
+  if (residual(t, j.U.data(), j.dU.data(), j.w, hold) != 0) return 1;
   for (int k = 0; k < n; ++k)
     if (!j.dU[k].derivatives().allFinite()) return 1;
   for (int col = 0; col < n; ++col) {
@@ -271,9 +355,10 @@ int GranularHydro1D::jacobianWith(double t, const double* U, const BandWriter& w
   return 0;
 }
 
-int GranularHydro1D::jacobian(double t, const double* U, const BandWriter& write) const {
-  return rough() ? jacobianWith(t, U, write, *rough_jets_)
-                 : jacobianWith(t, U, write, *smooth_jets_);
+int GranularHydro1D::jacobian(double t, const double* U, const BandWriter& write,
+                              WallHold hold) const {
+  return rough() ? jacobianWith(t, U, write, *rough_jets_, hold)
+                 : jacobianWith(t, U, write, *smooth_jets_, hold);
 }
 
 }  // namespace granwave::hydro

@@ -18,6 +18,9 @@
 // kContactRange of the wall, a dashpot on approach whose work heats the wall cell, and the
 // wall collisions' energy loss Phi_W^wall p_k sqrt(theta/(2 pi)). Away from a wall the
 // boundary node is a free surface (Pi = 0 outside): the layer lands, rests and lifts off.
+// With hard walls (WallModel::Hard) there is no contact range: a node that reaches its wall
+// stops there (an event; its kinetic energy relative to the wall heats the wall cell) and is
+// held while the wall pushes on it, released when the wall would have to pull (an event).
 //
 // Why Lagrangian: mass is conserved exactly, a resting layer is an exact discrete
 // equilibrium (node forces are pressure differences of neighbouring cells, nothing is
@@ -46,6 +49,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "hydro/ConstitutiveModel.hpp"
@@ -129,11 +133,33 @@ class GranularHydro1D {
   // Velocities below this are noise (1e-4 sqrt(g sigma)): the width of the smooth switches.
   double velocityNoise() const { return reg_.u_width; }
 
+  // Hard walls (WallModel::Hard): which boundary nodes the plate and the lid hold. A held node
+  // rests at its wall (dz/dt = du/dt = 0) while the wall pushes on it with the reaction that
+  // balances the cell's stress and the node's weight; with the spring both are always free.
+  struct WallHold {
+    bool plate, lid;  // no member initialisers: WallHold{} (both free) is a default argument
+  };
+  bool hardWalls() const { return numerics_.walls == WallModel::Hard; }
+  // The event functions of the hard walls (CvodeOptions::events = 2): g[0] for the plate, g[1]
+  // for the lid; a free node's gap to its wall (a root is a landing), a held node's reaction
+  // (N/m, wallReactions; a root is a release, the wall would have to pull).
+  void wallEvents(double t, const double* U, WallHold hold, double* g) const;
+  // At events `found` (t, U): a landing node stops, its kinetic energy heating the wall cell,
+  // and is held if the wall pushes on it; a released node goes free. Returns the new hold.
+  WallHold wallEvent(double t, std::vector<double>& U, WallHold hold,
+                     const std::vector<int>& found) const;
+  // Hard walls: whether the boundary nodes are within the walls (to 1e-6 sigma): a node past
+  // its wall is a landing the event detection missed. Always true for the spring, whose
+  // contact lets a node press into its range.
+  bool withinWalls(const double* U) const;
+  // The hold of a start: a node at its wall (within round-off) that the wall pushes on.
+  WallHold startingHold(double t, const double* U) const;
+
   // dU/dt. Returns 0, or 1 (recoverable: CVODE retries with a smaller step) if the state has
   // a non-finite value.
-  int rightHandSide(double t, const double* U, double* dUdt) const;
+  int rightHandSide(double t, const double* U, double* dUdt, WallHold hold = {}) const;
   // The exact Jacobian d(dU/dt)/dU, banded, written element by element. Same return codes.
-  int jacobian(double t, const double* U, const BandWriter& write) const;
+  int jacobian(double t, const double* U, const BandWriter& write, WallHold hold = {}) const;
 
   std::string componentName(int k) const;
 
@@ -149,7 +175,7 @@ class GranularHydro1D {
     double wall_loss = 0;         // the particles' collisions with the plate and the lid
     double side_wall_loss = 0;    // the side walls' sink
   };
-  EnergyRates energyRates(double t, const double* U) const;
+  EnergyRates energyRates(double t, const double* U, WallHold hold = {}) const;
   // E of the state U at time t (J/m), the energy the rates above change.
   double labEnergy(double t, const double* U) const;
   // The elastic energy stored in a wall contact at this gap (J/m).
@@ -159,14 +185,22 @@ class GranularHydro1D {
   template <class S>
   struct Workspace;
   template <class S>
-  int residual(double t, const S* U, S* dUdt, Workspace<S>& w) const;
+  int residual(double t, const S* U, S* dUdt, Workspace<S>& w, WallHold hold) const;
+  // The exchanges with the plate and the lid of a state whose cells `w` holds.
+  template <class S>
+  std::pair<WallExchange<S>, WallExchange<S>> wallExchanges(double t, const S* U,
+                                                            const Workspace<S>& w,
+                                                            WallHold hold) const;
+  // The reactions (N/m, > 0 pushing) the plate and the lid need to hold their nodes.
+  template <class S>
+  std::pair<S, S> wallReactions(double t, const Workspace<S>& w) const;
   template <class S>
   void cellStates(const S* U, Workspace<S>& w) const;
   template <int Colours>
   struct JetWorkspace;
   template <int Colours>
-  int jacobianWith(double t, const double* U, const BandWriter& write,
-                   JetWorkspace<Colours>& j) const;
+  int jacobianWith(double t, const double* U, const BandWriter& write, JetWorkspace<Colours>& j,
+                   WallHold hold) const;
 
   // Scales of the regularisations above, fixed at construction.
   using Regularisation = CellRegularisation;

@@ -19,6 +19,13 @@ struct HydroGeometry {
   double plateAcceleration(double t) const;
 };
 
+// How the plate and the lid meet the layer's boundary node (docs/hydro.md, "Walls").
+// Spring: a stiff unilateral repulsion within wall_contact_range of the wall, with a dashpot
+// (two regularisation parameters). Hard: a hard wall, contact and lift-off found as events
+// (the node lands completely inelastically and is held at the wall while the wall must push
+// on it; it is released when that reaction would pull): no parameter.
+enum class WallModel { Spring, Hard };
+
 // The numerical parameters of the discrete operator. None of them is physics: the answers
 // (periods, fronts, the centre-of-mass trajectory) must not move when one is halved or
 // doubled, and docs/hydro.md ("Sensitivity to the numerical parameters") shows that they do not.
@@ -32,6 +39,7 @@ struct HydroRegularisation {
   // (P_c = rho_cp g sigma, the weight per unit length of one close-packed row).
   double wall_contact_range = 0.05;
   double wall_contact_stiffness = 0.01;
+  WallModel walls = WallModel::Spring;  // Hard: the two above are not used
   // Close packing as a constraint: the closures see the density through
   // rho_eff = rho_max - d s((rho_max - rho)/d), s(x) = (x + sqrt(x^2 + 4))/2, with d this
   // fraction of the close-packed density (GranularHydro1D::cellView).

@@ -71,7 +71,7 @@ HydroPhase HydroSimulation::snapshot(double t, const std::vector<double>& U) con
   return p;
 }
 
-CvodeOptions HydroSimulation::solverOptions() const {
+CvodeOptions HydroSimulation::solverOptions() {
   const HydroGeometry& g = pde_.geometry();
   const double sigma = pde_.model().sigma;
   const int N = pde_.cells();
@@ -95,8 +95,17 @@ CvodeOptions HydroSimulation::solverOptions() const {
   co.max_steps = stepBudget();  // per output interval: at most a cycle's budget
   if (opt_.exact_jacobian && co.method == CvodeMethod::BdfBanded && !co.jacobian)
     co.jacobian = [this](double t, const double* y, const BandMatrixWriter& w) {
-      return pde_.jacobian(t, y, w);
+      return pde_.jacobian(t, y, w, hold_);
     };
+  if (pde_.hardWalls()) {
+    co.events = 2;
+    co.event_functions = [this](double t, const double* y, double* g) {
+      pde_.wallEvents(t, y, hold_, g);
+    };
+    co.on_event = [this](double t, std::vector<double>& y, const std::vector<int>& found) {
+      hold_ = pde_.wallEvent(t, y, hold_, found);
+    };
+  }
   return co;
 }
 
@@ -145,9 +154,11 @@ HydroResult HydroSimulation::run() {
   const int ramp = static_cast<int>(std::ceil(g.ramp_time / T - 1e-9));
 
   HydroResult r;
+  const std::vector<double> start = initialState();
+  hold_ = pde_.startingHold(0.0, start.data());
   CvodeIntegrator cv(
-      [this](double t, const double* y, double* yd) { return pde_.rightHandSide(t, y, yd); }, 0.0,
-      initialState(), solverOptions(), [this](int k) { return pde_.componentName(k); });
+      [this](double t, const double* y, double* yd) { return pde_.rightHandSide(t, y, yd, hold_); },
+      0.0, start, solverOptions(), [this](int k) { return pde_.componentName(k); });
 
   std::vector<HydroPhase> recent;  // the last max_period cycles of phases
   const std::size_t keep = static_cast<std::size_t>(opt_.max_period) * M;
@@ -162,6 +173,11 @@ HydroResult HydroSimulation::run() {
         throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle + 1) + ")",
                            e.time(), cycle + 1);
       }
+      if (!pde_.withinWalls(cv.state().data()))
+        throw HydroFailure("a boundary node passed through its wall at t = " + std::to_string(t) +
+                               " s (cycle " + std::to_string(cycle + 1) +
+                               "): a landing the hard wall's event detection missed",
+                           t, cycle + 1);
       if (opt_.interrupt && opt_.interrupt->load())
         throw HydroInterrupted("interrupted at t = " + std::to_string(t) + " s");
       HydroPhase ph = snapshot(t, cv.state());

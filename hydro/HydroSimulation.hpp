@@ -142,12 +142,14 @@ class HydroSimulation {
 
  private:
   HydroPhase snapshot(double t, const std::vector<double>& U) const;
-  CvodeOptions solverOptions() const;
+  CvodeOptions solverOptions();  // non-const: its event handler changes hold_
   int detectPeriod(const std::vector<double>& com) const;
   long stepBudget() const;
   HydroRegime classify(const std::vector<HydroPhase>& window) const;
   const GranularHydro1D& pde_;
   HydroRunOptions opt_;
+  // Hard walls: the nodes held now; changed only at the integrator's events.
+  GranularHydro1D::WallHold hold_{};
 };
 
 }  // namespace granwave::hydro

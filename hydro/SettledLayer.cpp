@@ -32,9 +32,12 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
 
   std::vector<double> U(pde.size(), 0.0);
   const double weight = N * m_c * g.gravity;
+  // On a hard wall the layer rests at the plate; on the spring where it carries the weight.
   const double gap =
-      solveIncreasing([&](double z) { return -pde.contactStress(z, 0.0, 0.0, 0.0); }, -weight,
-                      1e-9 * m.sigma, pde.regularisation().wall_contact_range * m.sigma);
+      pde.hardWalls()
+          ? 0.0
+          : solveIncreasing([&](double z) { return -pde.contactStress(z, 0.0, 0.0, 0.0); }, -weight,
+                            1e-9 * m.sigma, pde.regularisation().wall_contact_range * m.sigma);
   double z = gap;
   for (int i = 0; i < N; ++i) {
     const double stress = (N - i - 0.5) * m_c * g.gravity;

@@ -16,6 +16,9 @@ enum class HydroRestitutionModel { Constant, Velocity };
 enum class HydroTransport { JenkinsRichman, GarzoDufty };
 enum class HydroPairCorrelation { Luding, Henderson };
 enum class HydroParticles { Smooth, Rough };
+// How the continuum's plate and lid meet the layer: a stiff spring with a dashpot, or a hard
+// wall whose contact and lift-off are events (docs/hydro.md, "Walls").
+enum class HydroWalls { Spring, Hard };
 // The readings of the paper's "tangential COR set to 1" (walls) and "e_n = e_t = 1" (TC
 // collisions): smooth (tangential contact velocity kept), rough-elastic (reversed: Luding's
 // e_t = +1), or the particles' Coulomb friction law. docs/scenes.md, "Readings".
@@ -116,11 +119,12 @@ struct HydroSpec {
   double initial_temperature = 1e-4;
   // The numerical parameters of the discrete operator (hydro/GranularHydro1D.hpp,
   // HydroRegularisation); docs/hydro.md shows the answers do not depend on them.
-  double artificial_viscosity = 0.25;    // c2 of q = rho c2 du^2
-  double wall_contact_range = 0.05;      // sigma
-  double wall_contact_stiffness = 0.01;  // sigma
-  double packing_width = 1e-4;           // of the close-packed density
-  double temperature_floor = 1e-30;      // g sigma
+  double artificial_viscosity = 0.25;     // c2 of q = rho c2 du^2
+  HydroWalls walls = HydroWalls::Spring;  // hard: the two wall_contact keys are not used (1D)
+  double wall_contact_range = 0.05;       // sigma
+  double wall_contact_stiffness = 0.01;   // sigma
+  double packing_width = 1e-4;            // of the close-packed density
+  double temperature_floor = 1e-30;       // g sigma
 };
 
 struct Scene {

@@ -109,6 +109,11 @@ void readHydroParticles(Scene& s, const Entry& e) {
   s.hydro.particles = e.choice<P>({{"smooth", P::Smooth}, {"rough", P::Rough}});
 }
 
+void readHydroWalls(Scene& s, const Entry& e) {
+  using W = HydroWalls;
+  s.hydro.walls = e.choice<W>({{"spring", W::Spring}, {"hard", W::Hard}});
+}
+
 void readHydroStart(Scene& s, const Entry& e) {
   using St = HydroStart;
   s.hydro.start = e.choice<St>({{"settled", St::Settled}, {"spread", St::Spread}});
@@ -198,6 +203,7 @@ const Field kFields[] = {
     {"hydro", "start", readHydroStart},
     {"hydro", "initial_temperature", number<kH, &HydroSpec::initial_temperature>},
     {"hydro", "artificial_viscosity", number<kH, &HydroSpec::artificial_viscosity>},
+    {"hydro", "walls", readHydroWalls},
     {"hydro", "wall_contact_range", number<kH, &HydroSpec::wall_contact_range>},
     {"hydro", "wall_contact_stiffness", number<kH, &HydroSpec::wall_contact_stiffness>},
     {"hydro", "packing_width", number<kH, &HydroSpec::packing_width>},

@@ -132,6 +132,9 @@ void Checker::singleKeys() const {
   atMost("hydro.dimensions", s_.hydro.dimensions, 2, "1: the averaged layer, 2: the x-z plane");
   atLeast("hydro.columns", s_.hydro.columns, 0);
   atMost("hydro.columns", s_.hydro.columns, 10000, "columns across the width; 0 = one per 4 d");
+  if (s_.hydro.dimensions == 2 && s_.hydro.walls == HydroWalls::Hard)
+    fail("hydro.walls", "\"hard\"",
+         "is built for the 1D layer (hydro.dimensions = 1); the 2D layer has \"spring\" walls");
   within("hydro.perturbation", s_.hydro.perturbation, '[', 0.0, 0.1, ']',
          "RMS of the columns' relative masses");
   atLeast("hydro.cells", s_.hydro.cells, 8);

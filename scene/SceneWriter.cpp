@@ -172,6 +172,7 @@ std::string sceneToToml(const Scene& s) {
   w.key("start", quoted(s.hydro.start == HydroStart::Spread ? "spread" : "settled"));
   w.key("initial_temperature", s.hydro.initial_temperature);
   w.key("artificial_viscosity", s.hydro.artificial_viscosity);
+  w.key("walls", quoted(s.hydro.walls == HydroWalls::Hard ? "hard" : "spring"));
   w.key("wall_contact_range", s.hydro.wall_contact_range);
   w.key("wall_contact_stiffness", s.hydro.wall_contact_stiffness);
   w.key("packing_width", s.hydro.packing_width);

@@ -40,14 +40,14 @@ void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunCon
                   const std::string& out) {
   fmt::print("scene           {}\n", opt.scene_path);
   fmt::print(
-      "hydro           {} cells, {} transport, {} particles, restitution {}, rtol {:g}\n",
+      "hydro           {} cells, {} transport, {} particles, restitution {}, {} walls, rtol {:g}\n",
       scene.hydro.cells,
       scene.hydro.transport == HydroTransport::GarzoDufty ? "Garzo-Dufty" : "Jenkins-Richman",
       scene.hydro.particles == HydroParticles::Rough ? "rough" : "smooth",
       scene.hydro.restitution_model == HydroRestitutionModel::Constant
           ? "constant"
           : "velocity-dependent (Maxwell-averaged)",
-      scene.hydro.rtol);
+      scene.hydro.walls == HydroWalls::Hard ? "hard" : "spring", scene.hydro.rtol);
   fmt::print("periodic state  {} after {} cycles; centre-of-mass period {}\n",
              c.periodic ? "reached" : "NOT reached", c.cycles,
              c.periodic ? fmt::format("{}T", c.period) : std::string("unknown"));

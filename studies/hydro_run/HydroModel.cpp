@@ -62,6 +62,8 @@ hydro::HydroRegularisation hydroRegularisation(const Scene& scene) {
   r.quadratic_viscosity = scene.hydro.artificial_viscosity;
   r.wall_contact_range = scene.hydro.wall_contact_range;
   r.wall_contact_stiffness = scene.hydro.wall_contact_stiffness;
+  r.walls =
+      scene.hydro.walls == HydroWalls::Hard ? hydro::WallModel::Hard : hydro::WallModel::Spring;
   r.packing_width = scene.hydro.packing_width;
   r.temperature_floor = scene.hydro.temperature_floor;
   return r;

@@ -62,6 +62,15 @@ TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
   EXPECT_EQ(f.readStringAttribute("/plate_frame/temperature", "unit"), "J");
 }
 
+TEST_F(HydroCli, HardWallsRunToThePeriodicStateAndTheSummaryNamesThem) {
+  const Result r =
+      run("[hydro]\nwalls = \"hard\"\n[run]\nphases_per_cycle = 50\nduration = 1.2\n", "-o h.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("hard walls"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("periodic state  reached"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir_ / "h.h5"));
+}
+
 TEST_F(HydroCli, UndrivenSceneIsRejectedAndNothingWritten) {
   const Result r = run("[drive]\nfrequency = 0\n", "-o h.h5");
   EXPECT_EQ(r.code, 2);
