@@ -101,7 +101,9 @@ struct CvodeIntegrator::Impl {
     ++handled;
   }
 
-  // The counters since the start: those carried over restarts plus CVODE's own.
+  // The counters since the start: those carried over restarts plus CVODE's own. (After a
+  // restart CVODE zeroes its linear solver's counters only when the next CVode call starts;
+  // no counter is read in between.)
   CvodeStats current() const;
 
   static int jac(sunrealtype t, N_Vector y, N_Vector, SUNMatrix J, void* user, N_Vector, N_Vector,
@@ -331,6 +333,7 @@ void CvodeIntegrator::advanceTo(double tout) {
                            " s (the last at t = " + std::to_string(t) + " s): an event chatters",
                        "CVode", CV_ROOT_RETURN, t, m.current().last_step, -1);
     m.handleEvent(t);
+    if (t >= tout) break;  // a root at tout: its restart is the output, nothing left to do
   }
   const double* y = N_VGetArrayPointer(m.y);
   std::copy(y, y + m.n, m.out.begin());
@@ -342,7 +345,6 @@ const std::vector<double>& CvodeIntegrator::state() const { return impl_->out; }
 int CvodeIntegrator::largestErrorComponent() const { return impl_->worstComponent(); }
 
 CvodeStats CvodeIntegrator::stats() const { return impl_->current(); }
-long CvodeIntegrator::eventCount() const { return impl_->handled; }
 
 CvodeStats CvodeIntegrator::Impl::current() const {
   const Impl& m = *this;
@@ -374,6 +376,7 @@ CvodeStats CvodeIntegrator::Impl::current() const {
   s.lin_conv_fails += c.lin_conv_fails;
   s.prec_evals += c.prec_evals;
   s.prec_solves += c.prec_solves;
+  s.events = m.handled;
   return s;
 }
 

@@ -42,7 +42,7 @@ struct CvodeOptions {
   int max_order = 0;                      // 0 = method default (BDF 5, Adams 12)
   bool stability_limit_detection = true;  // BDF only (CVodeSetStabLimDet)
   double max_step = 0;                    // s, 0 = no limit
-  long max_steps = 20'000;  // per advance() call (an output interval); ~10 needed on average
+  long max_steps = 20'000;  // per CVode call: an output interval, or its part between events
   int band_upper = 0, band_lower = 0;
   std::vector<double> constraints;  // empty = none; else per component 0, 1, 2 (CVODE semantics)
   BandJacobian jacobian;            // BdfBanded: exact Jacobian; empty = difference quotients
@@ -57,13 +57,14 @@ struct CvodeOptions {
   int events = 0;
   std::function<void(double t, const double* y, double* g)> event_functions;
   std::function<void(double t, std::vector<double>& y, const std::vector<int>& found)> on_event;
-  long max_events = 1000;  // per advanceTo(): more is a chattering event, an error
+  long max_events = 1000;  // per advanceTo(): more is a chattering event, an error (terminal)
 };
 
 struct CvodeStats {
   long steps = 0, rhs_evals = 0, lin_rhs_evals = 0, jac_evals = 0;
   long err_test_fails = 0, nonlin_conv_fails = 0, nonlin_iters = 0;
   long lin_iters = 0, lin_conv_fails = 0, prec_evals = 0, prec_solves = 0;  // Krylov
+  long events = 0;  // events handled (CvodeOptions::events)
   double last_step = 0;
   int last_order = 0;
 };
@@ -107,9 +108,8 @@ class CvodeIntegrator {
   CvodeIntegrator& operator=(const CvodeIntegrator&) = delete;
 
   // Integrates to tout (normal mode: interpolated output at tout), handling the events met
-  // on the way. Throws CvodeError.
+  // on the way. Throws CvodeError; after one the integrator cannot go on.
   void advanceTo(double tout);
-  long eventCount() const;  // events handled since the start
   double time() const;
   const std::vector<double>& state() const;
   CvodeStats stats() const;

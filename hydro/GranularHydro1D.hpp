@@ -156,7 +156,9 @@ class GranularHydro1D {
   WallHold startingHold(double t, const double* U) const;
 
   // dU/dt. Returns 0, or 1 (recoverable: CVODE retries with a smaller step) if the state has
-  // a non-finite value.
+  // a non-finite value. With hard walls the caller passes the hold its events keep (the
+  // default, both free, is the spring's and a hard wall's free flight). Like every method
+  // here it uses the operator's one workspace: one operator serves one thread.
   int rightHandSide(double t, const double* U, double* dUdt, WallHold hold = {}) const;
   // The exact Jacobian d(dU/dt)/dU, banded, written element by element. Same return codes.
   int jacobian(double t, const double* U, const BandWriter& write, WallHold hold = {}) const;

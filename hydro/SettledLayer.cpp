@@ -59,8 +59,10 @@ std::vector<double> settledLayer(const GranularHydro1D& pde, double theta) {
 std::vector<double> spreadLayer(const GranularHydro1D& pde, double theta) {
   const HydroGeometry& g = pde.geometry();
   const double sigma = pde.model().sigma;
-  // Out of reach of both wall contacts, so the layer starts free.
-  const double gap = 2 * pde.regularisation().wall_contact_range * sigma;
+  // Out of reach of both wall contacts, so the layer starts free; with hard walls (no reach)
+  // 0.1 d, the spring's default reach, so that both start from the same layer.
+  const double gap =
+      pde.hardWalls() ? 0.1 * sigma : 2 * pde.regularisation().wall_contact_range * sigma;
   const double spacing = (g.height - 2 * gap) / g.cells;
   if (pde.cellMass() / spacing >=
       pde.model().packingLimit() * pde.model().mass / pde.model().diskArea())

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "HydroTestSupport.hpp"
@@ -78,23 +79,29 @@ void expectPhaseBudgetsClose(const HydroRegularisation& walls, double rtol) {
   o.start = HydroRunOptions::Start::Spread;
   const HydroResult r = HydroSimulation(pde, o).run();
   ASSERT_FALSE(r.window.empty());
-  double residual = 0, throughput = 0;
+  // Hard walls: at least a landing and a lift-off in each cycle after the two of the ramp.
+  if (walls.walls == WallModel::Hard) {
+    EXPECT_GE(r.stats.events, 2 * (r.cycles - 2));
+  }
+  double residual = 0, throughput = 0, worst = 0;
   for (const HydroPhase& ph : r.window) {
     const PhaseBudget& b = ph.budget;
     const double largest =
         std::max({std::abs(b.plate_work), b.collisional_loss, b.wall_loss, 1e-12});
     EXPECT_LT(std::abs(b.closure()), 5e-3 * largest) << "t = " << ph.time;
+    worst = std::max(worst, std::abs(b.closure()) / largest);
     residual += b.closure();
     throughput += std::abs(b.plate_work);
   }
   EXPECT_LT(std::abs(residual), 1e-4 * throughput);
+  ::testing::Test::RecordProperty("worst_phase_closure", std::to_string(worst));
 }
 
 TEST(EnergyBudget, PhaseBudgetsCloseToTheIntegrationTolerance) {
   // The rates integrated by CVODE with the layer (quadratures outside the error test): over
   // each phase the residual is the integration error of the layer's own unknowns at rtol
   // 1e-6: largest in the landing phase, where the plate's force rises within the phase
-  // (measured 1.6e-3 of the plate's work there, below 1e-5 elsewhere).
+  // (measured 1.6-1.9e-3 of the plate's work there, below 1e-5 elsewhere).
   expectPhaseBudgetsClose({}, 1e-6);
 }
 
@@ -102,7 +109,8 @@ TEST(EnergyBudget, PhaseBudgetsCloseThroughHardWallLandingsAndLiftOffs) {
   // Hard walls (WallModel::Hard): the landing's loss of the node's motion heats the wall cell
   // (no energy leaves), the wall's impulse and the held node's reaction do the plate's work.
   // The node's instant stop is sharper than the spring's landing: at rtol 1e-6 the landing
-  // phase's residual was 1.7e-2 of the plate's work; at rtol 1e-8 it is within the bounds.
+  // phase's residual was 1.7e-2 of the plate's work; at rtol 1e-8 it is within the bounds
+  // (measured 2.2e-3 of the landing phase's plate work, against 5e-3 asserted).
   HydroRegularisation hard;
   hard.walls = WallModel::Hard;
   expectPhaseBudgetsClose(hard, 1e-8);

@@ -46,25 +46,55 @@ TEST(HardWall, SettledLayerRestsOnThePlateWhichCarriesItsWholeWeight) {
   for (int j = 0; j <= 40; ++j) EXPECT_NEAR(R[pde.velocityIndex(j)], 0.0, 1e-9 * 9.81) << j;
 }
 
-TEST(HardWall, LandingStopsTheNodeAndItsKineticEnergyHeatsTheWallCell) {
-  // The bottom node (half a cell, m_c / 2) lands at speed u: it stops, and the wall cell's
-  // internal energy m_c theta gains (m_c / 2) u^2 / 2, so theta rises by u^2 / 4 and the
-  // lab-frame energy is unchanged (to round-off).
+// A node of half a cell (m_c / 2) that lands at speed u (plate frame) stops: the wall cell's
+// internal energy m_c theta gains (m_c / 2) u^2 / 2, so theta rises by u^2 / 4, and the wall's
+// impulse (m_c / 2) |u| does the work -(m_c / 2) u v_b on it in the lab frame: the lab-frame
+// energy changes by exactly that work, which the plate-work quadrature gains (to round-off).
+// At t = 0.25 s, past the ramp, where the plate moves at v_b = -A omega = -0.62 m/s.
+void expectLandingAccounting(int node, double u) {
+  const double t = 0.25;
+  const GranularHydro1D pde(test::paperGeometry(40), dryBeads(), 300 * kMass / (30 * kD),
+                            hardWalls(), true);
+  std::vector<double> U = spreadLayer(pde, 1e-2 * 9.81 * kD);
+  const int cell = node == 0 ? 0 : 39;
+  // Put the landing node at its wall (the whole layer shifted, cells unchanged).
+  const double shift = node == 0 ? -U[pde.heightIndex(0)] : 30 * kD - U[pde.heightIndex(40)];
+  for (int j = 0; j <= 40; ++j) U[pde.heightIndex(j)] += shift;
+  U[pde.velocityIndex(node)] = u;
+  const double theta = pde.temperature(U.data(), cell), before = pde.labEnergy(t, U.data());
+  const double work_before = U[pde.budgetIndex(0)];
+  const double vb = pde.geometry().plateVelocity(t);
+  ASSERT_GT(std::abs(vb), 0.01);
+  pde.wallEvent(t, U, {}, {node == 0 ? 1 : 0, node == 0 ? 0 : 1});
+  const double work = -0.5 * pde.cellMass() * u * vb;
+  EXPECT_EQ(U[pde.velocityIndex(node)], 0.0);
+  EXPECT_NEAR(pde.temperature(U.data(), cell), theta + 0.25 * u * u, 1e-12 * (theta + u * u));
+  EXPECT_NEAR(U[pde.budgetIndex(0)] - work_before, work, 1e-12 * std::abs(work));
+  EXPECT_NEAR(pde.labEnergy(t, U.data()) - before, work, 1e-10 * std::abs(before));
+}
+
+TEST(HardWall, PlateLandingHeatsTheWallCellAndTheImpulseDoesThePlatesWork) {
+  expectLandingAccounting(0, -0.3);
+}
+
+TEST(HardWall, LidLandingHeatsTheWallCellAndTheImpulseDoesThePlatesWork) {
+  expectLandingAccounting(40, 0.3);
+}
+
+TEST(HardWall, LandingNodeIsHeldOnlyWhereTheWallPushes) {
+  // A spread layer at rest: its bottom cell presses on the plate (its pressure and the node's
+  // weight), its top cell does not press on the lid (the node's weight pulls it away).
   const GranularHydro1D pde(test::paperGeometry(40), dryBeads(), 300 * kMass / (30 * kD),
                             hardWalls());
   std::vector<double> U = spreadLayer(pde, 1e-2 * 9.81 * kD);
-  const double z0 = U[pde.heightIndex(0)];
-  for (int j = 0; j <= 40; ++j) U[pde.heightIndex(j)] -= z0;  // the bottom node at the plate
-  const double u = -0.3;
-  U[pde.velocityIndex(0)] = u;
-  const double theta = pde.temperature(U.data(), 0), before = pde.labEnergy(0.0, U.data());
-  const GranularHydro1D::WallHold hold = pde.wallEvent(0.0, U, {}, {1, 0});
-  EXPECT_EQ(U[pde.velocityIndex(0)], 0.0);
-  EXPECT_NEAR(pde.temperature(U.data(), 0), theta + 0.25 * u * u, 1e-12 * (theta + u * u));
-  EXPECT_NEAR(pde.labEnergy(0.0, U.data()), before, 1e-12 * std::abs(before));
-  // The spread layer's cell pushes on the plate (its weight and pressure): held.
+  U[pde.heightIndex(0)] = 0;
+  U[pde.heightIndex(40)] = 30 * kD;
+  U[pde.velocityIndex(0)] = -0.1;
+  U[pde.velocityIndex(40)] = 0.1;
+  const GranularHydro1D::WallHold hold = pde.wallEvent(0.0, U, {}, {1, 1});
   EXPECT_TRUE(hold.plate);
   EXPECT_FALSE(hold.lid);
+  EXPECT_EQ(U[pde.velocityIndex(40)], 0.0);  // it stopped, and leaves again from rest
 }
 
 TEST(HardWall, ColdBlockLeavesThePlateWhereTheEffectiveGravityVanishes) {

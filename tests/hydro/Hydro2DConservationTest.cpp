@@ -37,9 +37,11 @@ Hydro2DResult perturbedRun(bool periodic, int cycles) {
 
 TEST(Hydro2DConservation, MassIsExactToRoundOffOverARun) {
   // The total mass sum_ik mu0 dx + (Phi_i-1,k - Phi_ik) telescopes: what is left is the
-  // round-off of 160 additions of numbers of the column's size, ~1e-16 each.
+  // round-off of 160 additions of numbers of the column's size, ~1e-16 each. Two cycles: the
+  // perturbed columns fall, land and exchange mass under the rising drive (the third cycle
+  // this test once ran added only time: 38 s of the sanitizer build's CI).
   for (bool periodic : {true, false}) {
-    const Hydro2DResult r = perturbedRun(periodic, 3);
+    const Hydro2DResult r = perturbedRun(periodic, 2);
     EXPECT_LT(r.mass_drift, 1e-13) << (periodic ? "periodic" : "side walls");
     char drift[32];
     std::snprintf(drift, sizeof drift, "%.3g", r.mass_drift);
