@@ -109,28 +109,31 @@ void heatFluxes(int N, W& w) {
 // Cells: density, temperature, closures, stress, and the rough particles' exchange.
 template <class S>
 void GranularHydro1D::cellStates(const S* U, Workspace<S>& w) const {
+  for (int i = 0; i < g_.cells; ++i) cellState(U, i, w);
+}
+
+template <class S>
+void GranularHydro1D::cellState(const S* U, int i, Workspace<S>& w) const {
   using std::exp;
   const double c2 = numerics_.quadratic_viscosity;
-  for (int i = 0; i < g_.cells; ++i) {
-    const EffectiveCell<S> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
-                                             U[heightIndex(i + 1)], U[temperatureIndex(i)]);
-    w.rho[i] = c.rho;
-    w.length[i] = c.length;
-    w.theta[i] = c.theta;
-    w.local[i] = model_.evaluate(c.rho, c.theta);
-    const S du = U[velocityIndex(i + 1)] - U[velocityIndex(i)];
-    // compression -> 1 for du < 0, -> 0 for du > 0; q = rho c2 du^2 there and exactly 0 at
-    // du = 0, so a resting layer feels none.
-    const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg_.u_width));
-    const S q = c.rho * compression * c2 * du * du;
-    w.du[i] = du;
-    w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
-    if (!rough()) continue;
-    const S spin = theta_unit_ * exp(U[rotationIndex(i)]) + reg_.theta_min;
-    const S nu = c.rho * (model_.diskArea() / model_.mass);
-    model_.rough.rates(nu, w.local[i].g2, w.local[i].phi_p, c.theta, spin, model_.sigma,
-                       w.exchange[i], w.spin[i]);
-  }
+  const EffectiveCell<S> c = effectiveCell(reg_, m_c_, theta_unit_, U[heightIndex(i)],
+                                           U[heightIndex(i + 1)], U[temperatureIndex(i)]);
+  w.rho[i] = c.rho;
+  w.length[i] = c.length;
+  w.theta[i] = c.theta;
+  w.local[i] = model_.evaluate(c.rho, c.theta);
+  const S du = U[velocityIndex(i + 1)] - U[velocityIndex(i)];
+  // compression -> 1 for du < 0, -> 0 for du > 0; q = rho c2 du^2 there and exactly 0 at
+  // du = 0, so a resting layer feels none.
+  const S compression = 0.5 * (1.0 - du / smoothAbs(du, reg_.u_width));
+  const S q = c.rho * compression * c2 * du * du;
+  w.du[i] = du;
+  w.stress[i] = w.local[i].p + q - w.local[i].viscosity * du / c.length;
+  if (!rough()) return;
+  const S spin = theta_unit_ * exp(U[rotationIndex(i)]) + reg_.theta_min;
+  const S nu = c.rho * (model_.diskArea() / model_.mass);
+  model_.rough.rates(nu, w.local[i].g2, w.local[i].phi_p, c.theta, spin, model_.sigma,
+                     w.exchange[i], w.spin[i]);
 }
 
 template <class S>
@@ -251,7 +254,11 @@ double GranularHydro1D::contactEnergy(double gap) const {
 
 void GranularHydro1D::wallEvents(double t, const double* U, WallHold hold, double* g) const {
   const int N = g_.cells;
-  if (hold.plate || hold.lid) cellStates(U, *values_);
+  // Called after every step and in the root search: only the two wall cells are evaluated.
+  if (hold.plate || hold.lid) {
+    cellState(U, 0, *values_);
+    cellState(U, N - 1, *values_);
+  }
   const auto [plate, lid] =
       hold.plate || hold.lid ? wallReactions(t, *values_) : std::pair<double, double>{0, 0};
   // A free node's root is at 1e-9 sigma past its wall, not at it: a node released at the wall

@@ -198,6 +198,8 @@ class GranularHydro1D {
   std::pair<S, S> wallReactions(double t, const Workspace<S>& w) const;
   template <class S>
   void cellStates(const S* U, Workspace<S>& w) const;
+  template <class S>
+  void cellState(const S* U, int cell, Workspace<S>& w) const;  // one cell of cellStates
   template <int Colours>
   struct JetWorkspace;
   template <int Colours>
