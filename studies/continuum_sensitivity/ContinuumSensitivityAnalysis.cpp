@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "coarse_grain/FrontTransit.hpp"
 #include "coarse_grain/ImpactFrontTracker.hpp"
 #include "studies/contract/StudyResults.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
@@ -69,36 +70,85 @@ double cyclicDistance(double a, double b, double span) {
   return std::min(d, span - d);
 }
 
-// The largest relative change of a matched front (kInf: a front appeared or vanished), and into
-// `sigma` that front's change over its fits' combined error (NaN: no such front or no errors).
-double frontChange(const SensitivityAnswer& base, const SensitivityAnswer& run, double span,
-                   double& sigma) {
-  sigma = std::numeric_limits<double>::quiet_NaN();
-  if (base.fronts.empty() != run.fronts.empty()) return kInf;
-  double worst = 0, worst_sigma = sigma;
+// The run's front that starts nearest to `b` (within 0.03 of a cycle), or null.
+const SensitivityFront* matchingFront(const SensitivityFront& b, const SensitivityAnswer& run,
+                                      double span) {
+  const SensitivityFront* match = nullptr;
+  for (const SensitivityFront& r : run.fronts)
+    if (cyclicDistance(r.start, b.start, span) <= 0.03 &&
+        (!match ||
+         cyclicDistance(r.start, b.start, span) < cyclicDistance(match->start, b.start, span)))
+      match = &r;
+  return match;
+}
+
+// The largest relative change of a matched front's transits (kInf: one appeared or vanished,
+// or became faster than the sampling by more than the tolerance; NaN: resolved in one run and
+// faster than the sampling in the other, with a bound that does not tell them apart). A front
+// with no transit resolved in either run is compared by its fit.
+double transitChange(const SensitivityFront& b, const SensitivityFront& r, double tolerance) {
+  if (b.transits.size() != r.transits.size()) return kInf;
+  double worst = 0;
+  bool resolved = false, undetermined = false;
+  for (std::size_t i = 0; i < b.transits.size(); ++i) {
+    const SensitivityTransit &tb = b.transits[i], &tr = r.transits[i];
+    if (tb.reached != tr.reached) return kInf;
+    if (!tb.reached || (!tb.resolved && !tr.resolved)) continue;
+    resolved = true;
+    if (tb.resolved && tr.resolved) {
+      worst = std::max(worst, std::abs(tr.speed - tb.speed) / tb.speed);
+      continue;
+    }
+    // One speed against the other's lower bound.
+    const double speed = tb.resolved ? tb.speed : tr.speed;
+    const double bound = tb.resolved ? tr.speed : tb.speed;
+    if (bound > (1 + tolerance) * speed) return kInf;
+    undetermined = true;
+  }
+  if (undetermined) return std::numeric_limits<double>::quiet_NaN();
+  if (resolved || !b.resolved) return worst;
+  return std::abs(r.speed - b.speed) / b.speed;
+}
+
+// Into c: the largest change of a matched front's transits (c.front) and of its fitted speed
+// (c.fit, with c.fit_sigma that change over its fits' combined error).
+void frontChanges(const SensitivityAnswer& base, const SensitivityAnswer& run, double span,
+                  double tolerance, SensitivityChange& c) {
+  c.fit_sigma = std::numeric_limits<double>::quiet_NaN();
+  c.front = c.fit = 0;
+  if (base.fronts.empty() != run.fronts.empty()) {
+    c.front = c.fit = kInf;
+    return;
+  }
   for (const SensitivityFront& b : base.fronts) {
-    const SensitivityFront* match = nullptr;
-    for (const SensitivityFront& r : run.fronts)
-      if (cyclicDistance(r.start, b.start, span) <= 0.03 &&
-          (!match ||
-           cyclicDistance(r.start, b.start, span) < cyclicDistance(match->start, b.start, span)))
-        match = &r;
-    if (!match || match->resolved != b.resolved || match->bulk != b.bulk) return kInf;
+    const SensitivityFront* match = matchingFront(b, run, span);
+    if (!match || match->resolved != b.resolved || match->bulk != b.bulk) {
+      c.front = c.fit = kInf;
+      c.fit_sigma = std::numeric_limits<double>::quiet_NaN();
+      return;
+    }
+    const double transit = transitChange(b, *match, tolerance);
+    // A change beyond doubt (inf) outranks an undetermined one (NaN), which outranks a number.
+    if (std::isinf(transit) || std::isinf(c.front))
+      c.front = kInf;
+    else if (std::isnan(transit) || std::isnan(c.front))
+      c.front = std::numeric_limits<double>::quiet_NaN();
+    else
+      c.front = std::max(c.front, transit);
     if (!b.resolved) continue;
     const double change = std::abs(match->speed - b.speed) / b.speed;
-    if (change < worst) continue;
-    worst = change;
+    if (change < c.fit) continue;
+    c.fit = change;
     const double e = std::hypot(b.fit_error, match->fit_error);
-    worst_sigma =
+    c.fit_sigma =
         e > 0 ? std::abs(match->speed - b.speed) / e : std::numeric_limits<double>::quiet_NaN();
   }
-  sigma = worst_sigma;
-  return worst;
 }
 
 }  // namespace
 
-SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance) {
+SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance,
+                                        const std::vector<double>& front_fractions) {
   SensitivityAnswer a;
   a.cpu_seconds = run.cpu;
   if (!run.ok) {
@@ -115,10 +165,22 @@ SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance) 
   a.regime = c.regime;
   comRange(c, a);
   const double dt = c.lab.time.size() > 1 ? c.lab.time[1] - c.lab.time[0] : 0;
-  for (const TrackedFront& f : trackFronts(frontProfiles(c.lab.pooled, c.lab.z), dt))
-    a.fronts.push_back({c.lab.phase[static_cast<std::size_t>(f.first_phase)], f.resolved,
-                        f.resolved ? f.speed : f.speed_lower_bound, f.resolved ? f.fit_error : 0.0,
-                        f.bulk_crossing > 0, f.bulk_speed_lower_bound});
+  const FrontProfiles profiles = frontProfiles(c.lab.pooled, c.lab.z);
+  for (const TrackedFront& f : trackFronts(profiles, dt)) {
+    SensitivityFront s{c.lab.phase[static_cast<std::size_t>(f.first_phase)],
+                       f.resolved,
+                       f.resolved ? f.speed : f.speed_lower_bound,
+                       f.resolved ? f.fit_error : 0.0,
+                       f.bulk_crossing > 0,
+                       f.bulk_speed_lower_bound,
+                       {}};
+    for (std::size_t k = 0; k + 1 < front_fractions.size(); ++k) {
+      const FrontTransit t =
+          frontTransit(profiles, f, dt, front_fractions[k], front_fractions[k + 1]);
+      s.transits.push_back({t.reached, t.resolved, t.resolved ? t.speed : t.speed_lower_bound});
+    }
+    a.fronts.push_back(std::move(s));
+  }
   return a;
 }
 
@@ -126,14 +188,14 @@ SensitivityChange sensitivityChange(const SensitivityAnswer& base, const Sensiti
                                     double tolerance) {
   SensitivityChange c;
   if (!base.ok || !run.ok) {
-    c.com = c.front = kInf;
+    c.com = c.front = c.fit = kInf;
     return c;
   }
   c.same_period = base.period == run.period;
   const double excursion = std::max(base.com_high - base.com_low, 1e-12);
   c.com = std::max(std::abs(run.com_low - base.com_low), std::abs(run.com_high - base.com_high)) /
           excursion;
-  c.front = frontChange(base, run, std::max(1, base.period), c.front_sigma);
+  frontChanges(base, run, std::max(1, base.period), tolerance, c);
   c.within = c.same_period && c.com < tolerance && c.front < tolerance;
   return c;
 }
@@ -144,7 +206,8 @@ ContinuumSensitivityResults analyseContinuumSensitivity(const ContinuumSensitivi
   for (const std::vector<SensitivityVariant>& variants : config.variants) {
     SensitivityCaseResult k;
     for (const SensitivityVariant& v : variants)
-      k.answers.push_back(readSensitivityAnswer(runs.get(v.label), config.tolerance));
+      k.answers.push_back(
+          readSensitivityAnswer(runs.get(v.label), config.tolerance, config.front_fractions));
     for (const SensitivityAnswer& a : k.answers) {
       k.changes.push_back(sensitivityChange(k.answers.front(), a, config.tolerance));
       if (&a == &k.answers.front()) continue;
@@ -160,6 +223,7 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
                                       const ContinuumSensitivityResults& r) {
   f.createGroup(kRoot);
   putValue(f, kRoot, "tolerance", config.tolerance);
+  putSeries(f, kRoot + "/front_fractions", config.front_fractions, "1");
   for (std::size_t k = 0; k < r.cases.size(); ++k) {
     const SensitivityCaseResult& c = r.cases[k];
     const std::string g = kRoot + "/case_" + std::to_string(k);
@@ -167,8 +231,10 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
     f.writeStringAttribute(g, "name", config.cases[k].name);
     f.writeStringAttribute(g, "law", kLawNames[config.cases[k].law]);
     std::vector<std::string> parameter;
-    std::vector<double> factor, period, solver_period, low, high, com, front, sigma, within, cpu,
-        fastest, fastest_error;
+    std::vector<double> factor, period, solver_period, low, high, com, front, fit, sigma, within,
+        cpu, fastest, fastest_error;
+    const std::size_t transits = config.front_fractions.size() - 1;
+    std::vector<std::vector<double>> transit(transits);
     for (std::size_t v = 0; v < c.answers.size(); ++v) {
       const SensitivityAnswer& a = c.answers[v];
       const SensitivityChange& d = c.changes[v];
@@ -181,17 +247,19 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
       high.push_back(a.ok ? a.com_high : std::nan(""));
       com.push_back(d.com);
       front.push_back(d.front);
-      sigma.push_back(d.front_sigma);
+      fit.push_back(d.fit);
+      sigma.push_back(d.fit_sigma);
       within.push_back(d.within ? 1 : 0);
       cpu.push_back(a.cpu_seconds);
-      double fast = std::nan(""), fast_error = std::nan("");
+      const SensitivityFront* fast = nullptr;
       for (const SensitivityFront& fr : a.fronts)
-        if (fr.resolved && (std::isnan(fast) || fr.speed > fast)) {
-          fast = fr.speed;
-          fast_error = fr.fit_error;
-        }
-      fastest.push_back(fast);
-      fastest_error.push_back(fast_error);
+        if (fr.resolved && (!fast || fr.speed > fast->speed)) fast = &fr;
+      fastest.push_back(fast ? fast->speed : std::nan(""));
+      fastest_error.push_back(fast ? fast->fit_error : std::nan(""));
+      for (std::size_t i = 0; i < transits; ++i) {
+        const bool known = fast && i < fast->transits.size() && fast->transits[i].resolved;
+        transit[i].push_back(known ? fast->transits[i].speed : std::nan(""));
+      }
     }
     f.writeStringArrayAttribute(g, "parameters", parameter);
     putSeries(f, g + "/factor", factor, "1");
@@ -201,9 +269,12 @@ void writeContinuumSensitivityResults(h5::File& f, const ContinuumSensitivityCon
     putSeries(f, g + "/com_high", high, "m");
     putSeries(f, g + "/com_change", com, "1");
     putSeries(f, g + "/front_change", front, "1");
-    putSeries(f, g + "/front_change_sigma", sigma, "1");
+    putSeries(f, g + "/fit_change", fit, "1");
+    putSeries(f, g + "/fit_change_sigma", sigma, "1");
     putSeries(f, g + "/fastest_front", fastest, "m s-1");
     putSeries(f, g + "/fastest_front_error", fastest_error, "m s-1");
+    for (std::size_t i = 0; i < transits; ++i)
+      putSeries(f, g + "/fastest_front_transit_" + std::to_string(i), transit[i], "m s-1");
     putSeries(f, g + "/within_tolerance", within, "1");
     putSeries(f, g + "/cpu_seconds", cpu, "s");
     putValue(f, g, "variants_within", c.within);

@@ -11,6 +11,13 @@
 
 namespace granwave {
 
+// A front's passage between two mass fractions of the layer.
+struct SensitivityTransit {
+  bool reached = false;   // the track passes both fractions
+  bool resolved = false;  // over at least three tracked phases
+  double speed = 0;       // m/s (resolved), else the lower bound of its speed
+};
+
 // One impact front of a run's window (the velocity-jump tracker, coarse_grain/
 // ImpactFrontTracker.hpp).
 struct SensitivityFront {
@@ -25,6 +32,10 @@ struct SensitivityFront {
   // absent, not by value.
   bool bulk = false;
   double bulk_speed = 0;
+  // Its transits between consecutive mass fractions of the study's `front_fractions`
+  // (coarse_grain/FrontTransit.hpp): what the study compares, since a deep layer's front
+  // decelerates and its fitted speed depends on where the track ends.
+  std::vector<SensitivityTransit> transits;
 };
 
 // What one run answered.
@@ -44,16 +55,21 @@ struct SensitivityAnswer {
 // How far a variant moved from its case's base run.
 struct SensitivityChange {
   bool same_period = false;
-  double com = 0;    // max(|d low|, |d high|) / (base high - base low)
-  double front = 0;  // largest relative change of a matched front (0: both faster than the
-                     // sampling or both without fronts; inf: a front appeared or vanished)
-  // The change of the front with the largest relative change in units of its two fits'
-  // combined error, sqrt(e_base^2 + e_run^2) (NaN: no resolved front matched, or no errors).
-  // A rough guide, not a Gaussian significance: a fit through 3-4 phases has 1-2 degrees of
-  // freedom, and a deterministic run's residuals are the sampling's, not noise; of order 1 or
-  // below, the change is within what the fits fix.
-  double front_sigma = std::numeric_limits<double>::quiet_NaN();
-  bool within = false;  // same period, com and front below the tolerance
+  double com = 0;  // max(|d low|, |d high|) / (base high - base low)
+  // The largest relative change of a matched front's transit speeds (0: both faster than the
+  // sampling or both without fronts; inf: a front, or a transit, appeared or vanished, or
+  // became faster than the sampling by more than the tolerance; NaN: a transit resolved in one
+  // run only, whose bound in the other cannot tell them apart). A front with no transit
+  // resolved in either run is compared by its fitted speed.
+  double front = 0;
+  // The largest relative change of a matched front's fitted speed (the straight line through its
+  // whole track), shown beside the transits, and that change in units of its two fits' combined
+  // error, sqrt(e_base^2 + e_run^2) (NaN: no resolved front matched, or no errors). A rough
+  // guide, not a Gaussian significance: a deterministic run's residuals are the sampling's and
+  // the track's curvature, not noise.
+  double fit = 0;
+  double fit_sigma = std::numeric_limits<double>::quiet_NaN();
+  bool within = false;  // same period, com and front (transits) below the tolerance
 };
 
 struct SensitivityCaseResult {
@@ -66,7 +82,8 @@ struct ContinuumSensitivityResults {
   std::vector<SensitivityCaseResult> cases;
 };
 
-SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance);
+SensitivityAnswer readSensitivityAnswer(const RunRecord& run, double tolerance,
+                                        const std::vector<double>& front_fractions);
 SensitivityChange sensitivityChange(const SensitivityAnswer& base, const SensitivityAnswer& run,
                                     double tolerance);
 ContinuumSensitivityResults analyseContinuumSensitivity(const ContinuumSensitivityConfig& config,

@@ -16,14 +16,23 @@ namespace {
 
 std::string percent(double change) {
   if (std::isinf(change)) return "changed";
-  if (!std::isfinite(change)) return "-";
+  if (std::isnan(change)) return "undetermined";
   return fmt::format("{:.1f} %", 100 * change);
 }
 
-// The front's change, and in units of the fits' combined error where both fronts have one.
-std::string frontChangeText(const SensitivityChange& c) {
-  if (!std::isfinite(c.front) || std::isnan(c.front_sigma)) return percent(c.front);
-  return fmt::format("{} ({:.1f} sigma)", percent(c.front), c.front_sigma);
+// The fit's change, and in units of the fits' combined error where both fronts have one.
+std::string fitChangeText(const SensitivityChange& c) {
+  if (!std::isfinite(c.fit) || std::isnan(c.fit_sigma)) return percent(c.fit);
+  return fmt::format("{} ({:.1f} sigma)", percent(c.fit), c.fit_sigma);
+}
+
+std::string transitsText(const SensitivityFront& f) {
+  std::vector<std::string> t;
+  for (const SensitivityTransit& x : f.transits)
+    t.push_back(!x.reached   ? "-"
+                : x.resolved ? formatNumber(x.speed, 2)
+                             : "> " + formatNumber(x.speed, 0));
+  return t.empty() ? std::string() : fmt::format(" [{}]", fmt::join(t, ", "));
 }
 
 std::string periodText(const SensitivityAnswer& a) {
@@ -43,6 +52,7 @@ std::string frontsText(const SensitivityAnswer& a) {
     if (f.bulk) s += fmt::format("bulk > {} then ", formatNumber(f.bulk_speed, 0));
     s += f.resolved ? formatNumber(f.speed, 2) + " +- " + formatNumber(f.fit_error, 2)
                     : "> " + formatNumber(f.speed, 0);
+    s += transitsText(f);
   }
   return s;
 }
@@ -61,15 +71,18 @@ Table caseTable(const ContinuumSensitivityConfig& config, std::size_t k,
       "Each run against the base: period (at the tolerance; the solver's stricter one in brackets "
       "where it differs), the centre of mass's mean lowest and highest point "
       "per cycle above the plate (in diameters), the largest relative change of either (of the "
-      "base's excursion), the velocity-jump fronts of the window (m/s; '> x': faster than the "
-      "sampling resolves, with its bound; 'bulk > x then': the impact crossed the packed bottom "
-      "within one phase, faster than x; +- the fit's standard error) and the largest relative "
-      "change of a matched front, with that front's change in units of its two fits' combined "
-      "error (a rough guide: of order 1 or below, within what the fits fix). "
-      "Within tolerance: the same period and both changes below {:.0f} %.",
-      100 * config.tolerance);
-  t.columns = {"run",    "period", "centre of mass (d)", "change", "fronts (m/s)", "change",
-               "within", "CPU s"};
+      "base's excursion), the velocity-jump fronts of the window (m/s: the straight line through "
+      "the track, +- its standard error, and in brackets the transit speeds between the layer's "
+      "mass fractions {}; '> x': faster than the sampling resolves, with its bound; '-': not "
+      "reached; 'bulk > x then': the impact crossed the packed bottom within one phase, faster "
+      "than x), the largest relative change of a matched front's transits (a front reaching "
+      "none: of its fit) and of its fit, with the fit's change in units of the two fits' "
+      "combined error. Within tolerance: the same period and the centre-of-mass and transit "
+      "changes below {:.0f} %.",
+      fmt::join(config.front_fractions, ", "), 100 * config.tolerance);
+  t.columns = {"run",        "period",       "centre of mass (d)",
+               "change",     "fronts (m/s)", "transit change",
+               "fit change", "within",       "CPU s"};
   for (std::size_t v = 0; v < c.answers.size(); ++v) {
     const SensitivityAnswer& a = c.answers[v];
     const SensitivityChange& ch = c.changes[v];
@@ -77,8 +90,9 @@ Table caseTable(const ContinuumSensitivityConfig& config, std::size_t k,
     t.rows.push_back(
         {variantName(config.variants[k][v]), periodText(a),
          a.ok ? fmt::format("{:.2f}-{:.2f}", a.com_low / d, a.com_high / d) : a.failure,
-         base ? "(base)" : percent(ch.com), frontsText(a), base ? "(base)" : frontChangeText(ch),
-         base ? "(base)" : (ch.within ? "yes" : "no"), formatNumber(a.cpu_seconds, 1)});
+         base ? "(base)" : percent(ch.com), frontsText(a), base ? "(base)" : percent(ch.front),
+         base ? "(base)" : fitChangeText(ch), base ? "(base)" : (ch.within ? "yes" : "no"),
+         formatNumber(a.cpu_seconds, 1)});
   }
   return t;
 }
@@ -132,9 +146,11 @@ std::string caseAnswer(const ContinuumSensitivityConfig& config, std::size_t k,
     } else {
       if (!ch.same_period) why.push_back("period changed");
       if (!(ch.com < config.tolerance)) why.push_back("centre of mass moved " + percent(ch.com));
-      if (!(ch.front < config.tolerance))
-        why.push_back(std::isinf(ch.front) ? "a front appeared or vanished"
-                                           : "front moved " + percent(ch.front));
+      if (std::isnan(ch.front))
+        why.push_back("a transit resolved in one run only (the sampling cannot tell)");
+      else if (!(ch.front < config.tolerance))
+        why.push_back(std::isinf(ch.front) ? "a front or transit appeared or vanished"
+                                           : "front's transit moved " + percent(ch.front));
     }
     outside += fmt::format("{}{} ({})", outside.empty() ? "" : "; ",
                            variantName(config.variants[k][v]), fmt::join(why, ", "));

@@ -96,14 +96,23 @@ ContinuumSensitivityStudy::ContinuumSensitivityStudy(StudyFile& f) {
   c_.factors = f.numbers("parameters", "factors", c_.factors);
   c_.tolerance = f.number("parameters", "tolerance", c_.tolerance);
   c_.phases_per_cycle = f.integer("parameters", "phases_per_cycle", c_.phases_per_cycle);
+  c_.front_fractions = f.numbers("parameters", "front_fractions", c_.front_fractions);
+  bool increasing = c_.front_fractions.size() >= 2;
+  for (std::size_t k = 0; k < c_.front_fractions.size(); ++k)
+    increasing = increasing && c_.front_fractions[k] >= 0 && c_.front_fractions[k] <= 1 &&
+                 (k == 0 || c_.front_fractions[k] > c_.front_fractions[k - 1]);
+  if (!increasing)
+    f.fail("parameters", "front_fractions",
+           "expected at least two increasing mass fractions in [0, 1]");
   if (!(c_.tolerance > 0 && c_.tolerance < 1))
     f.fail("parameters", "tolerance", "expected a fraction in (0, 1)");
   for (double factor : c_.factors)
     if (!(factor > 0) || factor == 1) f.fail("parameters", "factors", "expected > 0 and != 1");
   c_.scenes.loadBase(f);
   for (const SensitivityCase& k : c_.cases) {
-    std::vector<std::string> base = k.set;
-    base.push_back(fmt::format("run.phases_per_cycle={}", c_.phases_per_cycle));
+    // The study's sampling first, so that a case's own overrides (a finer sampling) win.
+    std::vector<std::string> base{fmt::format("run.phases_per_cycle={}", c_.phases_per_cycle)};
+    base.insert(base.end(), k.set.begin(), k.set.end());
     const Scene scene = c_.scenes.scene(f, k.law, base);
     std::vector<SensitivityVariant> vs{{"", 1, 0, hydroLabel(k.law, k.name + " | base")}};
     requests_.push_back(runRequest(RunKind::Hydro, vs.back().label, scene));

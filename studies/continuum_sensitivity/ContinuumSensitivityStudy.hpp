@@ -41,6 +41,9 @@ struct ContinuumSensitivityConfig {
   std::vector<double> factors{0.5, 2.0};
   double tolerance = 0.05;  // the largest relative change that counts as "does not move"
   int phases_per_cycle = 400;
+  // Mass fractions of the layer between which the fronts' transit speeds are compared: the
+  // lower and the upper half, less the tenth at each end where a front starts and fades.
+  std::vector<double> front_fractions{0.1, 0.5, 0.9};
   std::vector<std::vector<SensitivityVariant>> variants;  // [case][variant], base first
 };
 

@@ -135,12 +135,17 @@ inline std::string studyWith(const std::string& path, const std::string& key,
   return text;
 }
 
-// The tiny wave-fronts study, resp. the tiny stability sweep, with one line replaced.
+// The tiny wave-fronts study, the tiny stability sweep, resp. the tiny continuum-sensitivity
+// study, with one line replaced.
 inline std::string tinyWith(const std::string& key, const std::string& replace) {
   return studyWith(kTinyStudy, key, replace);
 }
 inline std::string tinyStabilityWith(const std::string& key, const std::string& replace) {
   return studyWith(GRANWAVE_SOURCE_DIR "/tests/studies/data/tiny-stability.toml", key, replace);
+}
+inline std::string tinySensitivityWith(const std::string& key, const std::string& replace) {
+  return studyWith(GRANWAVE_SOURCE_DIR "/tests/studies/data/tiny-continuum-sensitivity.toml", key,
+                   replace);
 }
 
 }  // namespace granwave::testing

@@ -66,7 +66,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadStudy{"StabilityRepeatedGamma", tinyStabilityWith("gammas", "gammas = [3.0, 3.0]"),
                  "[grid] gammas"},
         BadStudy{"StabilityTooFewCycles", tinyStabilityWith("cycles", "cycles = 10"),
-                 "[particles] cycles"}),
+                 "[particles] cycles"},
+        BadStudy{"SensitivityFractionsOutOfOrder",
+                 tinySensitivityWith("tolerance", "tolerance = 0.05\nfront_fractions = [0.5, 0.1]"),
+                 "[parameters] front_fractions"},
+        BadStudy{"SensitivityFractionAboveOne",
+                 tinySensitivityWith("tolerance", "tolerance = 0.05\nfront_fractions = [0.5, 1.5]"),
+                 "[parameters] front_fractions"}),
     [](const auto& info) { return std::string(info.param.name); });
 
 // A study file copied out of the repository names the scenes as the shipped ones do

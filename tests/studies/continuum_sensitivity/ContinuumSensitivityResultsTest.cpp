@@ -52,7 +52,7 @@ TEST_F(ContinuumSensitivityResults, FrontsAreFittedToAFewPercentAndNoChangeReach
   // the 5 % tolerance is under about 1.3 sigma: none may reach 2.
   const auto speed = study().series(kCase + "/fastest_front");
   const auto error = study().series(kCase + "/fastest_front_error");
-  const auto sigma = study().series(kCase + "/front_change_sigma");
+  const auto sigma = study().series(kCase + "/fit_change_sigma");
   ASSERT_EQ(error.size(), speed.size());
   ASSERT_EQ(sigma.size(), speed.size());
   ASSERT_FALSE(std::isnan(speed[0]));  // the base has a resolved front
