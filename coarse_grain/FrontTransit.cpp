@@ -80,7 +80,8 @@ FrontTransit frontTransit(const FrontProfiles& p, const TrackedFront& f, double 
         height = heightOfFraction(p, phaseOf(f, 0, dt, p.phases), x);
         return 0;
       }
-      const double s = (x - q[k - 1]) / (q[k] - q[k - 1]);
+      // The previous point's share is below x (or unknown: then the passage is taken here).
+      const double s = std::isfinite(q[k - 1]) ? (x - q[k - 1]) / (q[k] - q[k - 1]) : 1.0;
       time = f.time[k - 1] + s * (f.time[k] - f.time[k - 1]);
       height = f.height[k - 1] + s * (f.height[k] - f.height[k - 1]);
       return static_cast<long>(k);
