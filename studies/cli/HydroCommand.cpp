@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "coarse_grain/FieldsFile.hpp"
+#include "coarse_grain/FrontTransit.hpp"
 #include "files/OutputPath.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/OptionChecks.hpp"
@@ -67,6 +68,7 @@ void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunCon
         static_cast<double>(e.last_phase) / samples_per_cycle, e.speed, e.fit_error,
         e.peak_temperature);
   }
+  fmt::print("{}", velocityFrontLines(c.lab));
   printBudget(c);
   fmt::print("output          {}\n", out);
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "coarse_grain/FrontTransit.hpp"
 #include "scene/SceneDerived.hpp"
 
 namespace granwave {
@@ -118,7 +119,7 @@ std::string formatFieldsSummary(const FieldsAnalysis& a) {
         static_cast<double>(e.last_phase) / a.samples_per_cycle, e.speed, e.speed_error,
         e.speed_relative, e.peak_temperature);
   }
-  return r;
+  return r + velocityFrontLines(a.profiles());
 }
 
 }  // namespace granwave

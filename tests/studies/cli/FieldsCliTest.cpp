@@ -94,6 +94,9 @@ TEST_F(FieldsCli, WritesFieldsFileWithGridProfilesFrontsAndSidecar) {
   const Result r = run("fields wet.h5 -o f.h5 --period 2");
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("pooled"), std::string::npos) << r.out;
+  // The velocity-jump fronts with their transits through the layer's mass (FrontTransit.hpp).
+  EXPECT_NE(r.out.find("velocity front  t/T "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" (mass 0.1-0.5), "), std::string::npos) << r.out;
   auto f = granwave::h5::File::openReadOnly((dir_ / "f.h5").string());
   EXPECT_EQ(f.shape("/fields/temperature"), (granwave::h5::Shape{200, 40, 30}));
   EXPECT_EQ(f.shape("/profiles/rms_velocity_x"), (granwave::h5::Shape{200, 40}));

@@ -62,6 +62,22 @@ TEST_F(HydroCli, CoarseRunReachesPeriodicStateAndWritesFields) {
   EXPECT_EQ(f.readStringAttribute("/plate_frame/temperature", "unit"), "J");
 }
 
+// The summary gives the velocity-jump front with its transit speeds through the layer's mass
+// (coarse_grain/FrontTransit.hpp): on the paper's layer at 400 phases per cycle the impact front
+// climbs through several phases, so its fit and both transits are measured speeds, not bounds.
+TEST_F(HydroCli, SummaryGivesTheVelocityFrontWithItsTransitsThroughTheLayer) {
+  const Result r = run("[run]\nphases_per_cycle = 400\nduration = 1.2\n", "-o h.h5");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto at = r.out.find("velocity front  t/T ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  const std::string line = r.out.substr(at, r.out.find('\n', at) - at);
+  EXPECT_NE(line.find(" m/s (fit, lab); transits "), std::string::npos) << line;
+  EXPECT_NE(line.find(" m/s (mass 0.1-0.5), "), std::string::npos) << line;
+  EXPECT_NE(line.find(" m/s (0.5-0.9)"), std::string::npos) << line;
+  EXPECT_EQ(line.find("not reached"), std::string::npos) << line;
+  EXPECT_EQ(line.find("> "), std::string::npos) << line;
+}
+
 TEST_F(HydroCli, HardWallsRunToThePeriodicStateAndTheSummaryNamesThem) {
   const Result r =
       run("[hydro]\nwalls = \"hard\"\n[run]\nphases_per_cycle = 50\nduration = 1.2\n", "-o h.h5");
