@@ -9,10 +9,7 @@
 // by the layer, not by the track's ends: the mean speed, Delta z / Delta t, between the
 // passages of the front through two fractions of the layer's mass (the share of the layer's mass
 // below the front at each tracked phase, interpolated linearly between phases).
-#include <string>
-
 #include "coarse_grain/ImpactFrontTracker.hpp"
-#include "coarse_grain/PhaseProfiles.hpp"
 
 namespace granwave {
 
@@ -37,12 +34,5 @@ double massFractionBelow(const FrontProfiles& p, int phase, double height);
 // below: unresolved, with the bound (height difference) / (phase intervals spanned).
 FrontTransit frontTransit(const FrontProfiles& p, const TrackedFront& front, double phase_dt,
                           double from, double to, const FrontTrackOptions& o = {});
-
-// One summary line per impact front of the velocity-jump tracker on a window's profiles (those
-// with at least min_points tracked phases, or crossing a packed bottom within a phase): its
-// start, its fitted speed and its transits between mass fractions 0.1, 0.5 and 0.9, for the
-// `simulate`, `fields` and `hydro` summaries ("velocity front    t/T ..."). Empty when the
-// window has fewer than two phases.
-std::string velocityFrontLines(const PhaseProfiles& profiles);
 
 }  // namespace granwave

@@ -6,12 +6,12 @@
 #include <filesystem>
 
 #include "coarse_grain/FieldsFile.hpp"
-#include "coarse_grain/FrontTransit.hpp"
 #include "files/OutputPath.hpp"
 #include "scene/SceneParser.hpp"
 #include "studies/cli/OptionChecks.hpp"
 #include "studies/hydro_run/Hydro2DRun.hpp"
 #include "studies/hydro_run/HydroRun.hpp"
+#include "studies/particle_run/VelocityFrontSummary.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/runner/InterruptFlag.hpp"
 

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "coarse_grain/FrontTransit.hpp"
 #include "scene/SceneDerived.hpp"
+#include "studies/particle_run/VelocityFrontSummary.hpp"
 
 namespace granwave {
 
