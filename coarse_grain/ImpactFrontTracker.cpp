@@ -219,7 +219,7 @@ int cyclicDistance(int a, int b, int n) {
 std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,
                                              const std::vector<FrontProfiles>& blocks, double dt,
                                              const FrontTrackOptions& o, int resamples,
-                                             std::uint64_t seed) {
+                                             std::uint64_t seed, const ResampleVisitor& visit) {
   std::vector<TrackedFront> out = trackFronts(pooled, dt, o);
   if (blocks.size() < 2 || out.empty()) return out;
   std::mt19937_64 draw(seed);
@@ -227,7 +227,8 @@ std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,
   std::vector<int> pick(blocks.size());
   for (int r = 0; r < resamples; ++r) {
     for (int& b : pick) b = static_cast<int>(draw() % blocks.size());
-    const std::vector<TrackedFront> again = trackFronts(blockAverage(blocks, pick), dt, o);
+    const FrontProfiles resampled = blockAverage(blocks, pick);
+    const std::vector<TrackedFront> again = trackFronts(resampled, dt, o);
     for (std::size_t e = 0; e < out.size(); ++e) {
       const TrackedFront* match = nullptr;
       for (const TrackedFront& t : again) {
@@ -236,7 +237,9 @@ std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,
             (!match || d < cyclicDistance(match->first_phase, out[e].first_phase, pooled.phases)))
           match = &t;
       }
-      if (match) speeds[e].push_back(match->speed);
+      if (!match) continue;
+      speeds[e].push_back(match->speed);
+      if (visit) visit(resampled, e, *match);
     }
   }
   for (std::size_t e = 0; e < out.size(); ++e) {

@@ -26,7 +26,9 @@
 // few rows behind (b) and ahead (a) of the front, s = (rho_b v_b - rho_a v_a) / (rho_b - rho_a)
 // (e.g. Landau & Lifshitz, Fluid Mechanics, Sec. 84). It needs a density jump that stands out
 // of the noise, which the hydro solver's shocks have and a dense particle layer may not.
+#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "coarse_grain/PhaseFields.hpp"
@@ -97,9 +99,18 @@ std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double phase_dt,
 // weighted by density) and tracks again; an episode's resampled speed is that of the resampled
 // episode starting nearest to it (within 3 phases). The draw is a fixed 64-bit Mersenne Twister
 // sequence (index = draw mod blocks), so the errors are the same on every build.
+// `visit`, if given, sees every match: the resampled profiles, the index of the pooled
+// episode and the resampled front matched to it, so a caller can bootstrap any other
+// property of the front (FrontTransit) over the same resamples.
+inline constexpr int kBootstrapResamples = 200;
+inline constexpr std::uint64_t kBootstrapSeed = 15;
+using ResampleVisitor = std::function<void(const FrontProfiles& resampled, std::size_t episode,
+                                           const TrackedFront& matched)>;
 std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,
                                              const std::vector<FrontProfiles>& blocks,
                                              double phase_dt, const FrontTrackOptions& o = {},
-                                             int resamples = 200, std::uint64_t seed = 15);
+                                             int resamples = kBootstrapResamples,
+                                             std::uint64_t seed = kBootstrapSeed,
+                                             const ResampleVisitor& visit = {});
 
 }  // namespace granwave

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <limits>
+
 #include "scene/SceneParser.hpp"
 
 namespace granwave {
@@ -9,8 +11,15 @@ namespace granwave {
 Scene studyScene(const StudyFile& study, const std::string& scene_path,
                  const std::vector<std::string>& overrides) {
   try {
-    Scene s = parseSceneFile(scene_path, overrides);
-    if (s.drive.frequency > 0) s.run.trajectory_stride = s.run.phases_per_cycle;
+    // A study keeps one frame of positions per drive cycle (it reads the fields). That stride
+    // is set before the scene's checks: the file's own (every phase, the paper's scenes) can
+    // exceed the positions limit at a study's finer sampling or in a deeper layer.
+    std::vector<std::string> all = overrides;
+    all.push_back(fmt::format("run.trajectory_stride={}", std::numeric_limits<int>::max()));
+    Scene s = parseSceneFile(scene_path, all);
+    if (!(s.drive.frequency > 0)) return parseSceneFile(scene_path, overrides);
+    s.run.trajectory_stride = s.run.phases_per_cycle;
+    validateScene(s, scene_path);
     return s;
   } catch (const SceneError& e) {
     std::string set;

@@ -193,10 +193,12 @@ void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& 
       "paper's text for this report). Melo, "
       "Umbanhowar & Swinney (PRL 72, 172 (1994)) found the standing waves at f/2 from a "
       "critical acceleration with a gravity-wave-like dispersion and a cutoff at the grain "
-      "size; Bizon et al. (PRL 80, 57 (1998)) reproduced patterns and wavelengths with "
-      "event-driven hard spheres, the waves appearing at about Gamma = 2.5. Clement, Vanel, "
-      "Rajchenbach & Duran (PRE 53, 2972 (1996)) observed period-doubled standing waves in a "
-      "quasi-2D cell, as the paper's model is. These are 3D or quasi-2D layers of many more "
+      "size, the critical value about 2.5 g (Umbanhowar, Melo & Swinney, Physica A 249, 1 "
+      "(1998)); Bizon et al. (PRL 80, 57 (1998)) reproduced the patterns with event-driven "
+      "hard spheres from about 2.5 g. Clement, Vanel, Rajchenbach & Duran (PRE 53, 2972 "
+      "(1996)) found a peak instability with a dispersion relation in quasi-2D layers, as the "
+      "paper's model is (as Luding et al., EPL 36, 247 (1996) summarise it; the papers' full "
+      "texts were not checked). These are 3D or quasi-2D layers of many more "
       "grains per wavelength; a 2D layer of hard disks is compared on the same axes for its "
       "trend, not its prefactor.");
   addDispersion(c, r, dispersion);

@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
+#include "coarse_grain/FrontTransit.hpp"
 #include "coarse_grain/ImpactFrontTracker.hpp"
 #include "studies/wave_analysis/ImpactFronts.hpp"
 
@@ -47,7 +49,72 @@ VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
   return v;
 }
 
+// Transit speeds of every resample of every episode, per pair of fractions.
+using ResampledTransits = std::vector<std::array<std::vector<double>, 2>>;
+
+double spread(const std::vector<double>& x) {
+  if (x.size() < 2) return NAN;
+  double m = 0, v = 0;
+  for (double a : x) m += a / static_cast<double>(x.size());
+  for (double a : x) v += (a - m) * (a - m) / static_cast<double>(x.size() - 1);
+  return std::sqrt(v);
+}
+
+// Each episode's transits on the pooled profiles, with the std over the bootstrap's resamples
+// when there are any. A resolved episode the bootstrap finds in fewer than half of its
+// resamples is left out, as for the fitted speed; one too fast for a fit (which the bootstrap
+// never matches) still gives its transits' bounds.
+void addTransits(VelocityFronts& v, const FrontProfiles& p, const std::vector<TrackedFront>& fronts,
+                 double dt, const ResampledTransits* resampled = nullptr) {
+  for (int i = 0; i < 2; ++i) {
+    TransitSpeeds& t = v.transit[i];
+    std::vector<Measurement> speeds;
+    for (std::size_t e = 0; e < fronts.size(); ++e) {
+      const TrackedFront& f = fronts[e];
+      if (f.resolved && std::isfinite(f.bootstrap_found) && f.bootstrap_found < 0.5) continue;
+      ++t.fronts;
+      const FrontTransit x =
+          frontTransit(p, f, dt, kTransitFractions[i][0], kTransitFractions[i][1]);
+      if (!x.reached) continue;
+      ++t.reached;
+      if (!x.resolved) {
+        t.lower_bound = std::isfinite(t.lower_bound) ? std::min(t.lower_bound, x.speed_lower_bound)
+                                                     : x.speed_lower_bound;
+        continue;
+      }
+      ++t.resolved;
+      speeds.push_back({x.speed, resampled ? spread((*resampled)[e][i]) : NAN});
+    }
+    t.speed = combine(speeds);
+  }
+}
+
+// Combined over seeds: resolved transits by granwave::combine, bounds by their smallest.
+TransitSpeeds combineTransits(const std::vector<TransitSpeeds>& seeds) {
+  TransitSpeeds t;
+  std::vector<Measurement> speeds;
+  for (const TransitSpeeds& s : seeds) {
+    t.fronts += s.fronts;
+    t.reached += s.reached;
+    t.resolved += s.resolved;
+    speeds.push_back(s.speed);
+    if (std::isfinite(s.lower_bound))
+      t.lower_bound =
+          std::isfinite(t.lower_bound) ? std::min(t.lower_bound, s.lower_bound) : s.lower_bound;
+  }
+  t.speed = combine(speeds);
+  return t;
+}
+
 }  // namespace
+
+std::string transitCell(const TransitSpeeds& t) {
+  if (t.speed.valid()) return format(t.speed);
+  if (std::isfinite(t.lower_bound))
+    return fmt::format("> {:.1f} (within fewer phases than a speed needs)", t.lower_bound);
+  if (t.fronts == 0) return "no front";
+  return "not reached: the fronts stop below these fractions of the mass";
+}
 
 VelocityFronts velocityFronts(const FieldsRecord& r) {
   const PhaseProfiles& p = r.profiles;
@@ -55,9 +122,21 @@ VelocityFronts velocityFronts(const FieldsRecord& r) {
   const FrontProfiles pooled = frontProfiles(p.pooled, p.z);
   std::vector<FrontProfiles> blocks;
   for (const PhaseFields& b : p.blocks) blocks.push_back(frontProfiles(b, p.z));
-  const std::vector<TrackedFront> tracked = trackWithBootstrap(pooled, blocks, dt);
+  ResampledTransits resampled;
+  auto visit = [&](const FrontProfiles& q, std::size_t e, const TrackedFront& f) {
+    if (resampled.size() <= e) resampled.resize(e + 1);
+    for (int i = 0; i < 2; ++i) {
+      const FrontTransit x =
+          frontTransit(q, f, dt, kTransitFractions[i][0], kTransitFractions[i][1]);
+      if (x.resolved) resampled[e][static_cast<std::size_t>(i)].push_back(x.speed);
+    }
+  };
+  const std::vector<TrackedFront> tracked = trackWithBootstrap(
+      pooled, blocks, dt, FrontTrackOptions{}, kBootstrapResamples, kBootstrapSeed, visit);
+  resampled.resize(tracked.size());
   std::vector<Measurement> counted;
   VelocityFronts v = summarise(tracked, &counted);
+  addTransits(v, pooled, tracked, dt, &resampled);
   // Weak and strong: the T~g-peak impact fronts as ImpactFronts ranks them, each matched to
   // the velocity-jump episode that starts nearest, within 3 phases (the bootstrap's matching
   // rule); an unmatched, unresolved or dropped episode leaves it invalid.
@@ -88,13 +167,19 @@ int nearestEpisode(const std::vector<int>& starts, int phase, int phases, int wi
 }
 
 VelocityFronts velocityFronts(const PhaseProfiles& p, double phase_dt) {
-  return summarise(trackFronts(frontProfiles(p.pooled, p.z), phase_dt));
+  const FrontProfiles pooled = frontProfiles(p.pooled, p.z);
+  const std::vector<TrackedFront> tracked = trackFronts(pooled, phase_dt);
+  VelocityFronts v = summarise(tracked);
+  addTransits(v, pooled, tracked, phase_dt);
+  return v;
 }
 
 VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {
   VelocityFronts v;
   std::vector<Measurement> speeds, jumps, weak, strong;
+  std::vector<TransitSpeeds> transits[2];
   for (const VelocityFronts& s : seeds) {
+    for (int i = 0; i < 2; ++i) transits[i].push_back(s.transit[i]);
     weak.push_back(s.weak);
     strong.push_back(s.strong);
     v.episodes += s.episodes;
@@ -110,6 +195,7 @@ VelocityFronts combineVelocityFronts(const std::vector<VelocityFronts>& seeds) {
   v.jump_speed = combine(jumps);
   v.weak = combine(weak);
   v.strong = combine(strong);
+  for (int i = 0; i < 2; ++i) v.transit[i] = combineTransits(transits[i]);
   if (v.speed.valid()) v.why_none.clear();
   return v;
 }

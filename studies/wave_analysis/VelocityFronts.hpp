@@ -12,6 +12,20 @@
 
 namespace granwave {
 
+// The fronts' transit speed between two fractions of the layer's mass (coarse_grain/
+// FrontTransit.hpp), over the window's impact fronts: the resolved transits combined (particles:
+// each with the std of its transit over the tracker's block bootstrap), the smallest lower bound
+// of those crossing within fewer phases than a speed needs, and counts.
+struct TransitSpeeds {
+  Measurement speed;  // m/s
+  double lower_bound = NAN;
+  int fronts = 0, reached = 0, resolved = 0;
+};
+
+// The two transits every velocity-jump summary reports: the dense lower half of the layer's
+// mass and its upper part.
+inline constexpr double kTransitFractions[2][2] = {{0.1, 0.5}, {0.5, 0.9}};
+
 struct VelocityFronts {
   Measurement speed;  // m/s, lab frame: the run's resolved impact fronts combined
   // After the weak and after the strong impact of the window (particles): the T~g-peak impact
@@ -23,7 +37,11 @@ struct VelocityFronts {
   int episodes = 0, resolved = 0;
   double lower_bound = NAN;  // m/s: the smallest bound of the unresolved fronts
   std::string why_none;      // empty when `speed` is valid
+  TransitSpeeds transit[2];  // mass fractions kTransitFractions[0] and [1]
 };
+
+// A transit for a table cell: the speed, else "> B m/s (within a phase)", else why there is none.
+std::string transitCell(const TransitSpeeds& t);
 
 // The index of the start in `starts` nearest to `phase` on a cycle of `phases`, if no more
 // than `within` phases away; else -1.

@@ -125,6 +125,26 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
   }
 }
 
+// The fronts' transits through the layer's mass, particles and hydro: `transit_dense` (mass
+// fractions 0.1-0.5) and `transit_upper` (0.5-0.9), each with `_error` and `_lower_bound`.
+void writeTransits(h5::File& f, const std::string& grp, const std::vector<SweepPoint>& points) {
+  const char* names[2] = {"transit_dense", "transit_upper"};
+  for (int i = 0; i < 2; ++i)
+    for (bool hydro : {false, true}) {
+      std::vector<double> v, e, b;
+      for (const SweepPoint& p : points) {
+        const TransitSpeeds& t = (hydro ? p.hydro_tracked : p.tracked).transit[i];
+        v.push_back(t.speed.value);
+        e.push_back(t.speed.error);
+        b.push_back(t.lower_bound);
+      }
+      const std::string base = fmt::format("{}/{}tracked_{}", grp, hydro ? "hydro_" : "", names[i]);
+      putSeries(f, base, v, "m s-1");
+      putSeries(f, base + "_error", e, "m s-1");
+      putSeries(f, base + "_lower_bound", b, "m s-1");
+    }
+}
+
 // The velocity-jump tracker's N sweep: speeds with errors, Rankine-Hugoniot speeds, lower
 // bounds of fronts faster than the sampling, seeds used.
 void writeTracked(h5::File& f, const std::string& grp, const std::vector<SweepPoint>& points) {
@@ -151,6 +171,7 @@ void writeTracked(h5::File& f, const std::string& grp, const std::vector<SweepPo
   putSeries(f, grp + "/hydro_tracked_speed_error", he, "m s-1");
   putSeries(f, grp + "/hydro_tracked_jump_speed", hj, "m s-1");
   putSeries(f, grp + "/hydro_tracked_jump_speed_error", hje, "m s-1");
+  writeTransits(f, grp, points);
 }
 
 void writeSweeps(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& r) {

@@ -211,6 +211,7 @@ void depthSection(const WaveFrontsConfig& c, const WaveFrontsResults& r, Report&
   s.add(std::move(t));
   deepLayerCaveat(r, s);
   trackedDepthTable(c, r, s);
+  transitDepthTable(c, r, s);
   costPerAnswer(c, r, s);
 }
 

@@ -124,6 +124,34 @@ TEST(ImpactFrontTracker, BootstrapErrorMatchesTheSpreadOfTheBlockSpeeds) {
   EXPECT_DOUBLE_EQ(f[0].bootstrap_found, 1.0);
 }
 
+TEST(ImpactFrontTracker, BootstrapVisitorSeesEveryMatchWithTheProfilesItWasTrackedOn) {
+  // The hook through which a caller bootstraps other properties of a front (its transits,
+  // studies/wave_analysis/VelocityFronts.cpp) over the same resamples: called once per matched
+  // resample, the matched speeds scatter exactly as the bootstrap error says, and tracking the
+  // profiles it is handed again gives the matched front.
+  const Step st;
+  std::vector<FrontProfiles> blocks;
+  for (double s : {1.95, 2.0, 2.05, 2.0}) blocks.push_back(movingStep(st, s, 3 * kDz, 40, 60));
+  const FrontProfiles pooled = movingStep(st, 2.0, 3 * kDz, 40, 60);
+  std::vector<double> seen;
+  bool same_track = true;
+  auto visit = [&](const FrontProfiles& q, std::size_t episode, const TrackedFront& matched) {
+    EXPECT_EQ(episode, 0u);
+    seen.push_back(matched.speed);
+    const std::vector<TrackedFront> again = trackFronts(q, kDt);
+    same_track = same_track && !again.empty() && again[0].speed == matched.speed;
+  };
+  const std::vector<TrackedFront> f =
+      trackWithBootstrap(pooled, blocks, kDt, {}, kBootstrapResamples, kBootstrapSeed, visit);
+  ASSERT_EQ(f.size(), 1u);
+  ASSERT_EQ(seen.size(), static_cast<std::size_t>(kBootstrapResamples));
+  EXPECT_TRUE(same_track);
+  double m = 0, v = 0;
+  for (double x : seen) m += x / seen.size();
+  for (double x : seen) v += (x - m) * (x - m) / (seen.size() - 1);
+  EXPECT_DOUBLE_EQ(std::sqrt(v), f[0].bootstrap_error);
+}
+
 TEST(ImpactFrontTracker, ImpactThatCrossesThePackedBottomWithinAPhaseIsAnEpisodeWithItsBound) {
   // Phases 0-9: the whole layer falls (v_a). From phase 10 the front is first seen 16 rows up,
   // everything below it already moving with the plate (v_b), and then climbs at 2 m/s: the
