@@ -94,6 +94,10 @@ struct TrackedFront {
 std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double phase_dt,
                                       const FrontTrackOptions& o = {});
 
+// The block bootstrap's defaults.
+inline constexpr int kBootstrapResamples = 200;
+inline constexpr std::uint64_t kBootstrapSeed = 15;
+
 // The same, with errors from a bootstrap over independent blocks of cycles: each resample
 // draws as many blocks as there are, with replacement, averages their profiles (velocity
 // weighted by density) and tracks again; an episode's resampled speed is that of the resampled
@@ -102,8 +106,6 @@ std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double phase_dt,
 // `visit`, if given, sees every match: the resampled profiles, the index of the pooled
 // episode and the resampled front matched to it, so a caller can bootstrap any other
 // property of the front (FrontTransit) over the same resamples.
-inline constexpr int kBootstrapResamples = 200;
-inline constexpr std::uint64_t kBootstrapSeed = 15;
 using ResampleVisitor = std::function<void(const FrontProfiles& resampled, std::size_t episode,
                                            const TrackedFront& matched)>;
 std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,

@@ -19,7 +19,13 @@ Scene studyScene(const StudyFile& study, const std::string& scene_path,
     Scene s = parseSceneFile(scene_path, all);
     if (!(s.drive.frequency > 0)) return parseSceneFile(scene_path, overrides);
     s.run.trajectory_stride = s.run.phases_per_cycle;
-    validateScene(s, scene_path);
+    try {
+      validateScene(s, scene_path);
+    } catch (const SceneError& e) {
+      throw SceneError(std::string(e.what()) +
+                       " (a study keeps one frame of positions per drive cycle: shorten "
+                       "run.duration or lower particles.count)");
+    }
     return s;
   } catch (const SceneError& e) {
     std::string set;

@@ -52,8 +52,11 @@ VelocityFronts summarise(const std::vector<TrackedFront>& fronts,
 // Transit speeds of every resample of every episode, per pair of fractions.
 using ResampledTransits = std::vector<std::array<std::vector<double>, 2>>;
 
+// The std of a front's transit over the resamples in which it was resolved; NaN when fewer
+// than half of the resamples resolved it (the others, too fast or not reached, would be left
+// out and the spread biased low).
 double spread(const std::vector<double>& x) {
-  if (x.size() < 2) return NAN;
+  if (x.size() < 2 || 2 * x.size() < static_cast<std::size_t>(kBootstrapResamples)) return NAN;
   double m = 0, v = 0;
   for (double a : x) m += a / static_cast<double>(x.size());
   for (double a : x) v += (a - m) * (a - m) / static_cast<double>(x.size() - 1);
@@ -62,8 +65,10 @@ double spread(const std::vector<double>& x) {
 
 // Each episode's transits on the pooled profiles, with the std over the bootstrap's resamples
 // when there are any. A resolved episode the bootstrap finds in fewer than half of its
-// resamples is left out, as for the fitted speed; one too fast for a fit (which the bootstrap
-// never matches) still gives its transits' bounds.
+// resamples is left out, as for the fitted speed; one too fast for a fit (whose bootstrap
+// share says nothing of it) still gives its transits' bounds. Without resamples (the
+// continuum, deterministic) the transits of the run's fronts (two at period 2) are averaged
+// with no statistical error: their difference is the two impacts', not noise.
 void addTransits(VelocityFronts& v, const FrontProfiles& p, const std::vector<TrackedFront>& fronts,
                  double dt, const ResampledTransits* resampled = nullptr) {
   for (int i = 0; i < 2; ++i) {
@@ -86,6 +91,7 @@ void addTransits(VelocityFronts& v, const FrontProfiles& p, const std::vector<Tr
       speeds.push_back({x.speed, resampled ? spread((*resampled)[e][i]) : NAN});
     }
     t.speed = combine(speeds);
+    if (!resampled) t.speed.error = NAN;
   }
 }
 
@@ -109,6 +115,8 @@ TransitSpeeds combineTransits(const std::vector<TransitSpeeds>& seeds) {
 }  // namespace
 
 std::string transitCell(const TransitSpeeds& t) {
+  if (t.speed.valid() && std::isfinite(t.lower_bound))
+    return fmt::format("{}; another front > {:.1f}", format(t.speed), t.lower_bound);
   if (t.speed.valid()) return format(t.speed);
   if (std::isfinite(t.lower_bound))
     return fmt::format("> {:.1f} (within fewer phases than a speed needs)", t.lower_bound);

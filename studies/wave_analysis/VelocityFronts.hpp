@@ -14,8 +14,9 @@ namespace granwave {
 
 // The fronts' transit speed between two fractions of the layer's mass (coarse_grain/
 // FrontTransit.hpp), over the window's impact fronts: the resolved transits combined (particles:
-// each with the std of its transit over the tracker's block bootstrap), the smallest lower bound
-// of those crossing within fewer phases than a speed needs, and counts.
+// each with the std of its transit over the tracker's block bootstrap; the continuum: their
+// mean, with no statistical error), the smallest lower bound of those crossing within fewer
+// phases than a speed needs, and counts.
 struct TransitSpeeds {
   Measurement speed;  // m/s
   double lower_bound = NAN;
@@ -40,7 +41,8 @@ struct VelocityFronts {
   TransitSpeeds transit[2];  // mass fractions kTransitFractions[0] and [1]
 };
 
-// A transit for a table cell: the speed, else "> B m/s (within a phase)", else why there is none.
+// A transit for a table cell: the speed (and the smallest bound of the fronts too fast for one,
+// if any), else "> B (within fewer phases than a speed needs)", else why there is none.
 std::string transitCell(const TransitSpeeds& t);
 
 // The index of the start in `starts` nearest to `phase` on a cycle of `phases`, if no more

@@ -20,16 +20,15 @@ std::string periodsCell(const std::vector<int>& periods) {
   return out;
 }
 
-// The continuum's transit over the particles': their ratio with its error (the continuum's
-// deterministic transit has none of its own), or how a bound compares with a speed.
+// The continuum's transit over the particles': their ratio with the particles' relative error
+// (the continuum's transit is deterministic; without a particle error the ratio has none), or
+// how a bound compares with a speed.
 std::string ratioCell(const TransitSpeeds& hydro, const TransitSpeeds& particles) {
   const Measurement& h = hydro.speed;
   const Measurement& p = particles.speed;
   if (h.valid() && p.valid() && p.value > 0) {
     const double r = h.value / p.value;
-    const double eh = std::isfinite(h.error) ? h.error / h.value : 0.0;
-    const double ep = std::isfinite(p.error) ? p.error / p.value : 0.0;
-    return format({r, r * std::hypot(eh, ep)});
+    return format({r, r * p.error / p.value});
   }
   if (h.valid() && std::isfinite(particles.lower_bound))
     return h.value < particles.lower_bound
@@ -84,7 +83,8 @@ void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
       "(their scatter enlarges it). A front that passes both fractions within fewer than three "
       "phases gives only a lower bound (the heights of the fractions over the phase intervals "
       "spanned); a finer sampling (`[sweep] phases_per_cycle`) resolves it. The continuum's "
-      "transits are deterministic: the ratio's error is the particles'.",
+      "transits are deterministic (at period 2 the mean of its two impacts): the ratio's error "
+      "is the particles'.",
       fmt::join(c.sweep_seeds, ", "), c.sweep_phases));
 }
 
