@@ -71,17 +71,21 @@ SweepPoint sweepPoint(const RunSet& runs, const std::string& particle_label,
 // The N sweep's point `n`: the velocity-jump tracker on every seed's run and on the hydro run
 // (its time between phases from the window's t/T and the scene's frequency).
 void trackSweepPoint(const WaveFrontsConfig& c, const RunSet& runs, int law, int n, SweepPoint& s) {
-  std::vector<VelocityFronts> seeds;
+  std::vector<VelocityFronts> seeds, period2;
   for (int sd : c.sweep_seeds) {
-    const auto p =
-        particleFields(runs, WaveFrontsConfig::particleRun(
-                                 law, WaveFrontsConfig::countTag(n, sd, c.sweep_seeds.front())));
+    const std::string label = WaveFrontsConfig::particleRun(
+        law, WaveFrontsConfig::countTag(n, sd, c.sweep_seeds.front()));
+    const auto p = particleFields(runs, label);
     if (!p) continue;
     seeds.push_back(velocityFronts(*p));
     s.seed_periods.push_back(p->context.layer_period);
+    if (const auto state = readStateFields(runs.get(label).fieldsPath(), 2))
+      period2.push_back(velocityFronts(*state));
   }
   s.tracked_seeds = static_cast<int>(seeds.size());
   s.tracked = combineVelocityFronts(seeds);
+  s.period2_seeds = static_cast<int>(period2.size());
+  if (!period2.empty()) s.tracked_period2 = combineVelocityFronts(period2);
   const HydroOutcome h =
       hydroOutcome(runs, WaveFrontsConfig::hydroRun(law, fmt::format("N={}", n)));
   s.hydro_tracked = trackedHydroFronts(h, c.scenes.base[law].drive.frequency);
@@ -125,20 +129,24 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
   }
 }
 
-// The fronts' transits through the layer's mass, particles and hydro: `transit_dense` (mass
-// fractions 0.1-0.5) and `transit_upper` (0.5-0.9), each with `_error` and `_lower_bound`.
+// The fronts' transits through the layer's mass, particles (pooled, and their period-2 windows)
+// and hydro: `transit_dense` (mass fractions 0.1-0.5) and `transit_upper` (0.5-0.9), each with
+// `_error` and `_lower_bound`.
 void writeTransits(h5::File& f, const std::string& grp, const std::vector<SweepPoint>& points) {
   const char* names[2] = {"transit_dense", "transit_upper"};
+  const char* sources[3] = {"tracked", "hydro_tracked", "tracked_period2"};
   for (int i = 0; i < 2; ++i)
-    for (bool hydro : {false, true}) {
+    for (int k = 0; k < 3; ++k) {
       std::vector<double> v, e, b;
       for (const SweepPoint& p : points) {
-        const TransitSpeeds& t = (hydro ? p.hydro_tracked : p.tracked).transit[i];
+        const VelocityFronts& from =
+            k == 0 ? p.tracked : (k == 1 ? p.hydro_tracked : p.tracked_period2);
+        const TransitSpeeds& t = from.transit[i];
         v.push_back(t.speed.value);
         e.push_back(t.speed.error);
         b.push_back(t.lower_bound);
       }
-      const std::string base = fmt::format("{}/{}tracked_{}", grp, hydro ? "hydro_" : "", names[i]);
+      const std::string base = fmt::format("{}/{}_{}", grp, sources[k], names[i]);
       putSeries(f, base, v, "m s-1");
       putSeries(f, base + "_error", e, "m s-1");
       putSeries(f, base + "_lower_bound", b, "m s-1");

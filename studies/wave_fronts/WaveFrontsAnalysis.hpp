@@ -54,6 +54,10 @@ struct SweepPoint {
   // layer's period of each seed's run and of the hydro run (0: not periodic or failed).
   VelocityFronts tracked, hydro_tracked;
   int tracked_seeds = 0;
+  // The same tracker on the fields of each seed's period-2 windows, aligned on their strong
+  // impact (simulate --state-fields), combined over the seeds that have them.
+  VelocityFronts tracked_period2;
+  int period2_seeds = 0;
   std::vector<int> seed_periods;
   int hydro_period = 0;
 };

@@ -1,6 +1,7 @@
 // The wave-fronts study's table of the impact fronts' transits through the layer's mass against
-// N (docs/studies.md, section 4): the particles over the sweep's seeds beside the continuum, with
-// the periods of both, so the deep layers are compared by a speed the layer defines (the mean
+// N (docs/studies.md, section 4): the particles over the sweep's seeds (the whole run, and its
+// period-2 windows aligned on their strong impact) beside the continuum, with the periods of
+// both, so the deep layers are compared by a speed the layer defines (the mean
 // speed between two fractions of its mass, coarse_grain/FrontTransit.hpp) and not by a straight
 // line whose value depends on where the track ends.
 #include <fmt/format.h>
@@ -43,6 +44,22 @@ std::string ratioCell(const TransitSpeeds& hydro, const TransitSpeeds& particles
   return "–";
 }
 
+// The period-2 windows' transits, "0.1-0.5 / 0.5-0.9", or why there are none.
+std::string period2Cell(const SweepPoint& p) {
+  if (p.period2_seeds == 0) return "no period-2 windows";
+  return fmt::format("{} / {} ({} of {} seeds)", transitCell(p.tracked_period2.transit[0]),
+                     transitCell(p.tracked_period2.transit[1]), p.period2_seeds, p.tracked_seeds);
+}
+
+// The particles' transit the ratio is taken against: the whole run's, or where it has neither
+// a speed nor a bound (a layer alternating its impacts), the period-2 windows'.
+const TransitSpeeds& particleTransit(const SweepPoint& p, int i) {
+  const TransitSpeeds& pooled = p.tracked.transit[i];
+  if (pooled.speed.valid() || std::isfinite(pooled.lower_bound) || p.period2_seeds == 0)
+    return pooled;
+  return p.tracked_period2.transit[i];
+}
+
 }  // namespace
 
 void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, ReportSection& s) {
@@ -53,6 +70,7 @@ void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
                "ED periods (seeds)",
                "ED mass 0.1-0.5 (m/s)",
                "ED mass 0.5-0.9 (m/s)",
+               "ED period-2 windows (m/s)",
                "hydro period",
                "hydro mass 0.1-0.5 (m/s)",
                "hydro mass 0.5-0.9 (m/s)",
@@ -65,11 +83,12 @@ void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
       const VelocityFronts& hy = p.hydro_tracked;
       t.rows.push_back(
           {std::to_string(c.counts[i]), kLawNames[law], periodsCell(p.seed_periods),
-           transitCell(ed.transit[0]), transitCell(ed.transit[1]),
+           transitCell(ed.transit[0]), transitCell(ed.transit[1]), period2Cell(p),
            p.hydro_ok ? (p.hydro_period > 0 ? fmt::format("{}T", p.hydro_period) : "not periodic")
                       : "failed",
            transitCell(hy.transit[0]), transitCell(hy.transit[1]),
-           ratioCell(hy.transit[0], ed.transit[0]), ratioCell(hy.transit[1], ed.transit[1])});
+           ratioCell(hy.transit[0], particleTransit(p, 0)),
+           ratioCell(hy.transit[1], particleTransit(p, 1))});
     }
   s.add(std::move(t));
   s.addText(fmt::format(
@@ -80,7 +99,12 @@ void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, Re
       "moves with every detail of a deep layer's dilute top. Particles: seeds {} at {} phases "
       "per cycle, each transit's error the std over the tracker's block bootstrap, combined over "
       "a run's impact fronts (a period-2 layer's weak and strong impacts together) and over seeds "
-      "(their scatter enlarges it). A front that passes both fractions within fewer than three "
+      "(their scatter enlarges it). A layer that alternates a weak and a strong impact pools "
+      "episodes of both parities in its 2-cycle window, where the velocity jump may not be "
+      "tracked: its period-2 windows, each aligned on its strong impact (simulate "
+      "--state-fields), give the transits beside them (both impacts together), and the ratio "
+      "is taken against these where the whole run has none. "
+      "A front that passes both fractions within fewer than three "
       "phases gives only a lower bound (the heights of the fractions over the phase intervals "
       "spanned); a finer sampling (`[sweep] phases_per_cycle`) resolves it. The continuum's "
       "transits are deterministic (at period 2 the mean of its two impacts): the ratio's error "

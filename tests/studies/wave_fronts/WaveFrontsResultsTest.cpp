@@ -51,11 +51,13 @@ TEST_F(WaveFrontsResults, DryContinuumFrontByTheVelocityJumpTravelsUpAtN150) {
 
 TEST_F(WaveFrontsResults, DryContinuumFrontPassesTheLowerHalfOfTheMassUpwardAtN150) {
   // Its transit from 10 % to 50 % of the layer's mass below it (coarse_grain/FrontTransit.hpp):
-  // a speed, upward; the particles' transits are written beside it, one per count.
+  // a speed, upward; the particles' transits (whole run and period-2 windows) are written
+  // beside it, one per count.
   const auto dense = study().series(kRoot + "/n_sweep/dry/hydro_tracked_transit_dense");
   ASSERT_EQ(dense.size(), 1u);
   EXPECT_GT(dense[0], 0.0) << dense[0] << " m/s";
   EXPECT_EQ(study().series(kRoot + "/n_sweep/dry/tracked_transit_upper_lower_bound").size(), 1u);
+  EXPECT_EQ(study().series(kRoot + "/n_sweep/dry/tracked_period2_transit_dense").size(), 1u);
 }
 
 }  // namespace
