@@ -131,13 +131,13 @@ void writePaper(h5::File& f, int law, const PaperLaw& p) {
 
 // The fronts' transits through the layer's mass, particles (pooled, and their period-2 windows)
 // and hydro: `transit_dense` (mass fractions 0.1-0.5) and `transit_upper` (0.5-0.9), each with
-// `_error` and `_lower_bound`.
+// `_error`, `_lower_bound` and the counts `_fronts`, `_reached`, `_resolved`.
 void writeTransits(h5::File& f, const std::string& grp, const std::vector<SweepPoint>& points) {
   const char* names[2] = {"transit_dense", "transit_upper"};
   const char* sources[3] = {"tracked", "hydro_tracked", "tracked_period2"};
   for (int i = 0; i < 2; ++i)
     for (int k = 0; k < 3; ++k) {
-      std::vector<double> v, e, b;
+      std::vector<double> v, e, b, fronts, reached, resolved;
       for (const SweepPoint& p : points) {
         const VelocityFronts& from =
             k == 0 ? p.tracked : (k == 1 ? p.hydro_tracked : p.tracked_period2);
@@ -145,11 +145,18 @@ void writeTransits(h5::File& f, const std::string& grp, const std::vector<SweepP
         v.push_back(t.speed.value);
         e.push_back(t.speed.error);
         b.push_back(t.lower_bound);
+        fronts.push_back(t.fronts);
+        reached.push_back(t.reached);
+        resolved.push_back(t.resolved);
       }
       const std::string base = fmt::format("{}/{}_{}", grp, sources[k], names[i]);
       putSeries(f, base, v, "m s-1");
       putSeries(f, base + "_error", e, "m s-1");
       putSeries(f, base + "_lower_bound", b, "m s-1");
+      // Fronts counted (over seeds), those passing both fractions, those with a speed.
+      putSeries(f, base + "_fronts", fronts, "1");
+      putSeries(f, base + "_reached", reached, "1");
+      putSeries(f, base + "_resolved", resolved, "1");
     }
 }
 

@@ -56,6 +56,14 @@ TEST_F(WaveFrontsResults, DryContinuumFrontPassesTheLowerHalfOfTheMassUpwardAtN1
   const auto dense = study().series(kRoot + "/n_sweep/dry/hydro_tracked_transit_dense");
   ASSERT_EQ(dense.size(), 1u);
   EXPECT_GT(dense[0], 0.0) << dense[0] << " m/s";
+  // A speed comes from a front that passed both fractions, counted as such.
+  const std::string counts = kRoot + "/n_sweep/dry/hydro_tracked_transit_dense_";
+  const double fronts = study().series(counts + "fronts").at(0);
+  const double reached = study().series(counts + "reached").at(0);
+  const double resolved = study().series(counts + "resolved").at(0);
+  EXPECT_GE(resolved, 1.0);
+  EXPECT_LE(resolved, reached);
+  EXPECT_LE(reached, fronts);
   EXPECT_EQ(study().series(kRoot + "/n_sweep/dry/tracked_transit_upper_lower_bound").size(), 1u);
   EXPECT_EQ(study().series(kRoot + "/n_sweep/dry/tracked_period2_transit_dense").size(), 1u);
 }
