@@ -13,6 +13,13 @@
 
 namespace granwave {
 
+// The mass fractions every front summary reports transits between (the summaries' `velocity
+// front` lines, the wave-fronts study, the continuum-sensitivity study's default): 0.1-0.5 the
+// dense lower half of the layer, 0.5-0.9 its upper part. The ends are left out: below a tenth
+// the front is still the underside compacting against the plate, above nine tenths the dilute
+// top, where a front's position is ill-defined.
+inline constexpr double kReportedFractions[3] = {0.1, 0.5, 0.9};
+
 struct FrontTransit {
   bool reached = false;   // the track passes both fractions
   bool resolved = false;  // at least min_points tracked phases lie between the two passages

@@ -243,15 +243,18 @@ std::vector<TrackedFront> trackWithBootstrap(const FrontProfiles& pooled,
     }
   }
   for (std::size_t e = 0; e < out.size(); ++e) {
-    const std::vector<double>& s = speeds[e];
-    out[e].bootstrap_found = static_cast<double>(s.size()) / resamples;
-    if (s.size() < 2) continue;
-    double m = 0, v = 0;
-    for (double x : s) m += x / s.size();
-    for (double x : s) v += (x - m) * (x - m) / (s.size() - 1);
-    out[e].bootstrap_error = std::sqrt(v);
+    out[e].bootstrap_found = static_cast<double>(speeds[e].size()) / resamples;
+    if (speeds[e].size() >= 2) out[e].bootstrap_error = bootstrapSpread(speeds[e]);
   }
   return out;
+}
+
+double bootstrapSpread(const std::vector<double>& s) {
+  if (s.size() < 2) return kNaNValue;
+  double m = 0, v = 0;
+  for (double x : s) m += x / s.size();
+  for (double x : s) v += (x - m) * (x - m) / (s.size() - 1);
+  return std::sqrt(v);
 }
 
 }  // namespace granwave

@@ -98,6 +98,11 @@ std::vector<TrackedFront> trackFronts(const FrontProfiles& p, double phase_dt,
 inline constexpr int kBootstrapResamples = 200;
 inline constexpr std::uint64_t kBootstrapSeed = 15;
 
+// The standard deviation (n - 1) of a property over the resamples that gave it: the bootstrap
+// error trackWithBootstrap attaches to a speed, and a caller to what it bootstraps through
+// `visit`. NaN for fewer than two values.
+double bootstrapSpread(const std::vector<double>& values);
+
 // The same, with errors from a bootstrap over independent blocks of cycles: each resample
 // draws as many blocks as there are, with replacement, averages their profiles (velocity
 // weighted by density) and tracks again; an episode's resampled speed is that of the resampled

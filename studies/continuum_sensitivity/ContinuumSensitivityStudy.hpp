@@ -4,10 +4,12 @@
 // trajectory, its impact front) stay put when a numerical or regularisation parameter is
 // halved or doubled? A model's answer counts only if they do. This file: the study's keys and
 // its runs, one hydro run per case and variant.
+#include <iterator>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "coarse_grain/FrontTransit.hpp"
 #include "studies/contract/Study.hpp"
 #include "studies/contract/StudyScenes.hpp"
 
@@ -43,7 +45,7 @@ struct ContinuumSensitivityConfig {
   int phases_per_cycle = 400;
   // Mass fractions of the layer between which the fronts' transit speeds are compared: the
   // lower and the upper half, less the tenth at each end where a front starts and fades.
-  std::vector<double> front_fractions{0.1, 0.5, 0.9};
+  std::vector<double> front_fractions{std::begin(kReportedFractions), std::end(kReportedFractions)};
   std::vector<std::vector<SensitivityVariant>> variants;  // [case][variant], base first
 };
 

@@ -56,11 +56,8 @@ using ResampledTransits = std::vector<std::array<std::vector<double>, 2>>;
 // than half of the resamples resolved it (the others, too fast or not reached, would be left
 // out and the spread biased low).
 double spread(const std::vector<double>& x) {
-  if (x.size() < 2 || 2 * x.size() < static_cast<std::size_t>(kBootstrapResamples)) return NAN;
-  double m = 0, v = 0;
-  for (double a : x) m += a / static_cast<double>(x.size());
-  for (double a : x) v += (a - m) * (a - m) / static_cast<double>(x.size() - 1);
-  return std::sqrt(v);
+  if (2 * x.size() < static_cast<std::size_t>(kBootstrapResamples)) return NAN;
+  return bootstrapSpread(x);
 }
 
 // Each episode's transits on the pooled profiles, with the std over the bootstrap's resamples
@@ -79,7 +76,7 @@ void addTransits(VelocityFronts& v, const FrontProfiles& p, const std::vector<Tr
       if (f.resolved && std::isfinite(f.bootstrap_found) && f.bootstrap_found < 0.5) continue;
       ++t.fronts;
       const FrontTransit x =
-          frontTransit(p, f, dt, kTransitFractions[i][0], kTransitFractions[i][1]);
+          frontTransit(p, f, dt, kReportedFractions[i], kReportedFractions[i + 1]);
       if (!x.reached) continue;
       ++t.reached;
       if (!x.resolved) {
@@ -135,7 +132,7 @@ VelocityFronts velocityFronts(const FieldsRecord& r) {
     if (resampled.size() <= e) resampled.resize(e + 1);
     for (int i = 0; i < 2; ++i) {
       const FrontTransit x =
-          frontTransit(q, f, dt, kTransitFractions[i][0], kTransitFractions[i][1]);
+          frontTransit(q, f, dt, kReportedFractions[i], kReportedFractions[i + 1]);
       if (x.resolved) resampled[e][static_cast<std::size_t>(i)].push_back(x.speed);
     }
   };

@@ -23,10 +23,6 @@ struct TransitSpeeds {
   int fronts = 0, reached = 0, resolved = 0;
 };
 
-// The two transits every velocity-jump summary reports: the dense lower half of the layer's
-// mass and its upper part.
-inline constexpr double kTransitFractions[2][2] = {{0.1, 0.5}, {0.5, 0.9}};
-
 struct VelocityFronts {
   Measurement speed;  // m/s, lab frame: the run's resolved impact fronts combined
   // After the weak and after the strong impact of the window (particles): the T~g-peak impact
@@ -38,7 +34,9 @@ struct VelocityFronts {
   int episodes = 0, resolved = 0;
   double lower_bound = NAN;  // m/s: the smallest bound of the unresolved fronts
   std::string why_none;      // empty when `speed` is valid
-  TransitSpeeds transit[2];  // mass fractions kTransitFractions[0] and [1]
+  // Between consecutive kReportedFractions (coarse_grain/FrontTransit.hpp): the dense lower
+  // half and the upper part of the layer.
+  TransitSpeeds transit[2];
 };
 
 // A transit for a table cell: the speed (and the smallest bound of the fronts too fast for one,
