@@ -9,7 +9,7 @@
 // velocity u_ik sits (a vertically Lagrangian, horizontally Eulerian grid):
 //
 //   cell mass per unit width  mu_ik = mu0_ik + (Phi_i-1,k - Phi_ik)/dx,  dPhi_ik/dt = F_ik
-//   dz_ij/dt = w_ij - ubar_ij dz_j/dx                (the layer interfaces are material)
+//   dz_ij/dt = w_ij - (u dz_j/dx)_ij              (the layer interfaces are material)
 //   M_node dw/dt = F_z - M_node g_eff(t) + advection along the layer
 //   M_face du/dt = F_x + advection along the layer
 //   M_cell theta ds/dt = heating - cooling - div q + advection along the layer

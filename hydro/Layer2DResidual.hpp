@@ -23,7 +23,7 @@ void assemble(double t, const StateView<S>& v, const GranularHydro2D::Workspace<
       const int n = g.node(i, j);
       const S below = j > 0 ? w.mass[g.cell(i, j - 1)] : zeroLike(v);
       const S above = j < g.N ? w.mass[g.cell(i, j)] : zeroLike(v);
-      dU[op.heightIndex(i, j)] = v.w(i, j) - w.ubar[n] * w.zx[n];
+      dU[op.heightIndex(i, j)] = v.w(i, j) - w.drift[n];
       dU[op.velocityIndex(i, j)] = w.fw[n] / (0.5 * dx * (below + above)) - geff;
     }
     for (int k = 0; k < g.N; ++k) {

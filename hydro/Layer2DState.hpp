@@ -1,7 +1,7 @@
 #pragma once
 // GranularHydro2D's right-hand side, first part: the cells as the closures see them, the
-// layer geometry between columns (face heights, interface slopes, the nodes' horizontal
-// velocity) and the horizontal mass fluxes. Internal to the 2D operator.
+// layer geometry between columns (face heights, interface slopes, the interfaces' vertical
+// drift) and the horizontal mass fluxes. Internal to the 2D operator.
 #include <cmath>
 
 #include "hydro/Layer2DWorkspace.hpp"
@@ -64,9 +64,32 @@ void cellStates(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
     }
 }
 
+// The horizontal velocity of face column i at the height of interface j: the mean of the faces
+// of the cells the node bounds (a side wall's faces have u = 0).
+template <class S>
+S interfaceFaceVelocity(const StateView<S>& v, const ColumnGrid& g, int i, int j) {
+  if (j == 0) return v.u(i, 0);
+  if (j == g.N) return v.u(i, g.N - 1);
+  return 0.5 * (v.u(i, j - 1) + v.u(i, j));
+}
+
 // The layer between columns: each face's height (the mean of its two cells' lengths), each
-// node's interface slope dz/dx (central; mirrored at a side wall) and horizontal velocity (the
-// mean of the faces of the cells it bounds; a side wall's faces have u = 0).
+// node's interface slope dz/dx (central; mirrored at a side wall), the slope across each face
+// and each node's vertical drift, the rate u dz/dx at which flow along a sloped interface
+// moves it (the interfaces are material: dz/dt = w - drift).
+//
+// Why the drift is taken face by face, 0.5 sum over the node's two faces of U_f s_f (U_f the
+// face's horizontal velocity at the interface: the mean of its two layers' u, the one layer's
+// at the plate and the free surface; s_f the slope across it), and not as the mean velocity
+// times the central slope: a central slope is blind to interfaces whose heights alternate
+// from column to column. Mass that crosses a face between two columns at different heights
+// changes its potential energy by F g dz; only a drift that sees that dz moves the nodes
+// (whose vertical motion gravity acts on) by about as much (to leading order: F = h u rho* is
+// not exactly the node masses times U_f), and the pressure force on u, the derivative of the
+// stress power through G_xx's drift term, can then act on such a mode.
+// With the central slope it had no restoring force and grew from cycle to cycle at the lid
+// (docs/hydro.md, "The 2D model": the grid-scale mode). For smooth interfaces the two agree
+// to second order in dx.
 template <class S>
 void layerGeometry(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const ColumnGrid& g = w.grid;
@@ -80,14 +103,15 @@ void layerGeometry(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
       const S& zr = v.z(r < 0 ? i : r, j);
       const S& zl = v.z(l < 0 ? i : l, j);
       w.zx[g.node(i, j)] = (zr - zl) / (2 * dx);
-      S sum = zeroLike(v);
-      int count = 0;
-      for (int k = j - 1; k <= j; ++k) {
-        if (k < 0 || k >= g.N) continue;
-        sum += v.u(l, k) + v.u(i, k);
-        count += 2;
-      }
-      w.ubar[g.node(i, j)] = sum / static_cast<double>(count);
+      w.face_slope[g.node(i, j)] = r < 0 ? zeroLike(v) : S((zr - v.z(i, j)) / dx);
+    }
+  }
+  for (int i = 0; i < g.Nx; ++i) {
+    const int l = g.left(i);
+    for (int j = 0; j <= g.N; ++j) {
+      S drift = interfaceFaceVelocity(v, g, i, j) * w.face_slope[g.node(i, j)];
+      if (l >= 0) drift += interfaceFaceVelocity(v, g, l, j) * w.face_slope[g.node(l, j)];
+      w.drift[g.node(i, j)] = 0.5 * drift;
     }
   }
 }

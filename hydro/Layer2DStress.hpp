@@ -15,18 +15,18 @@
 
 namespace granwave::hydro::layer2d {
 
-// Adds `coefficient` d(ubar_ij)/du to the force of every face ubar_ij averages.
+// Adds `coefficient` d(drift_ij)/du to the force of every face the drift of node (i, j)
+// depends on (Layer2DState.hpp, layerGeometry: 0.5 s_f U_f over the node's two faces).
 template <class S>
-void scatterNodeVelocity(const GranularHydro2D& op, GranularHydro2D::Workspace<S>& w, int i, int j,
-                         const S& coefficient) {
+void scatterNodeDrift(const GranularHydro2D& op, GranularHydro2D::Workspace<S>& w, int i, int j,
+                      const S& coefficient) {
   const ColumnGrid& g = w.grid;
   const int l = g.left(i);
-  const int count = 2 * ((j > 0 ? 1 : 0) + (j < g.N ? 1 : 0));
-  const S share = coefficient / static_cast<double>(count);
+  const double per_layer = 0.5 / ((j > 0 ? 1 : 0) + (j < g.N ? 1 : 0));
   for (int k = j - 1; k <= j; ++k) {
     if (k < 0 || k >= g.N) continue;
-    if (l >= 0) w.fu[g.cell(l, k)] += share;
-    if (!op.wallFace(i)) w.fu[g.cell(i, k)] += share;
+    if (l >= 0) w.fu[g.cell(l, k)] += coefficient * per_layer * w.face_slope[g.node(l, j)];
+    if (!op.wallFace(i)) w.fu[g.cell(i, k)] += coefficient * per_layer * w.face_slope[g.node(i, j)];
   }
 }
 
@@ -44,8 +44,7 @@ CellStrain<S> cellStrain(const StateView<S>& v, const GranularHydro2D::Workspace
   const S& len = w.len[c];
   const S hL = l < 0 ? zeroLike(v) : w.h[g.cell(l, k)];
   const S volume_flux = w.h[c] * v.u(i, k) - hL * v.u(l, k);
-  const S metric =
-      w.ubar[g.node(i, k + 1)] * w.zx[g.node(i, k + 1)] - w.ubar[g.node(i, k)] * w.zx[g.node(i, k)];
+  const S metric = w.drift[g.node(i, k + 1)] - w.drift[g.node(i, k)];
   return {volume_flux / (v.op.dx() * len) - metric / len, (v.w(i, k + 1) - v.w(i, k)) / len};
 }
 template <class S>
@@ -58,8 +57,8 @@ void cellStrainForces(const StateView<S>& v, GranularHydro2D::Workspace<S>& w, i
   const S ax = a / (op.dx() * len);
   if (!op.wallFace(i)) w.fu[c] += ax * w.h[c];
   if (l >= 0) w.fu[g.cell(l, k)] -= ax * w.h[g.cell(l, k)];
-  scatterNodeVelocity(op, w, i, k + 1, S(-a * w.zx[g.node(i, k + 1)] / len));
-  scatterNodeVelocity(op, w, i, k, S(a * w.zx[g.node(i, k)] / len));
+  scatterNodeDrift(op, w, i, k + 1, S(-a / len));
+  scatterNodeDrift(op, w, i, k, S(a / len));
   w.fw[g.node(i, k + 1)] += b / len;
   w.fw[g.node(i, k)] -= b / len;
 }

@@ -47,8 +47,9 @@ struct GranularHydro2D::Workspace {
         flux(Nx * N),
         h(Nx * N),
         fu(Nx * N),
-        ubar(Nx * (N + 1)),
         zx(Nx * (N + 1)),
+        face_slope(Nx * (N + 1)),
+        drift(Nx * (N + 1)),
         fw(Nx * (N + 1)) {}
   ColumnGrid grid;
   // Cells: length, mass per unit width (floored), density mass/length, the density and
@@ -58,8 +59,9 @@ struct GranularHydro2D::Workspace {
   std::vector<LocalState<S>> local;
   // Faces: mass flux to the right (kg/s per unit depth), height, force on u (N per unit depth).
   std::vector<S> flux, h, fu;
-  // Nodes: horizontal velocity (the faces' mean), slope of the interface, force on w.
-  std::vector<S> ubar, zx, fw;
+  // Nodes: the interface's slope dz/dx (central), its slope between the node's column and
+  // the next (per face, as the faces), its vertical drift u dz/dx (Layer2DState.hpp), force on w.
+  std::vector<S> zx, face_slope, drift, fw;
   // Per column: the plate's and the lid's stress and losses (energy rates).
   struct Wall {
     S plate_stress, lid_stress, plate_loss, lid_loss;
