@@ -87,9 +87,9 @@ S interfaceFaceVelocity(const StateView<S>& v, const ColumnGrid& g, int i, int j
 // (whose vertical motion gravity acts on) by about as much (to leading order: F = h u rho* is
 // not exactly the node masses times U_f), and the pressure force on u, the derivative of the
 // stress power through G_xx's drift term, can then act on such a mode.
-// With the central slope it had no restoring force and grew from cycle to cycle at the lid
-// (docs/hydro.md, "The 2D model": the grid-scale mode). For smooth interfaces the two agree
-// to second order in dx.
+// With the central slope no force acted on it, and alternate columns' top cells were squeezed
+// against the lid cycle after cycle (docs/hydro.md, "Interfaces between columns"). For smooth
+// interfaces the two agree to second order in dx.
 template <class S>
 void layerGeometry(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const ColumnGrid& g = w.grid;
