@@ -4,7 +4,16 @@
 //
 // Conduction: q = -kappa grad theta through each interface (normal (-dz/dx, 1) dx: the 1D
 // flux with the slope's corrections) and each face (the horizontal gradient at fixed height:
-// along the layer less the slope times d(theta)/dz).
+// along the layer less the slope times d(theta)/dz). The two-point part of a flux runs down
+// the difference of the two cells it joins; the slope's correction is built from other
+// cells' temperatures and can drive heat out of a cell colder than both (a cold, packed
+// column beside one that lands: docs/hydro.md, "Conduction on sloped layers"). Each
+// correction is therefore weighted by 4 theta_a theta_b / (theta_a + theta_b)^2 of the two
+// cells: 1 - delta^2/4 for theta_b = theta_a (1 + delta), so smooth fields keep their
+// consistent flux to second order in the jump, while the outflow a correction drives from a
+// cell of theta_a -> 0 vanishes with theta_a (about 4 theta_a / theta_b times the
+// correction): no cell's temperature reaches zero through conduction (a positivity argument
+// in the spirit of the nonlinear two-point fluxes of Le Potier, C. R. Math. 341, 787 (2005)).
 //
 // Advection: the mass flux F through a face carries the upwinded, limited value of the
 // advected field (in s = ln theta for the temperatures, so positive). In the inflow form
@@ -30,6 +39,13 @@ S verticalGradient(const GranularHydro2D::Workspace<S>& w, int i, int k) {
   return (w.theta[g.cell(i, hi)] - w.theta[g.cell(i, lo)]) / span;
 }
 
+// The weight of a conduction flux's slope correction between cells of theta a and b.
+template <class S>
+S correctionWeight(const S& a, const S& b) {
+  const S sum = a + b;
+  return 4.0 * a * b / (sum * sum);
+}
+
 template <class S>
 void heatConduction(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const ColumnGrid& g = w.grid;
@@ -44,7 +60,9 @@ void heatConduction(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
                     w.theta[g.cell(a, j)]) /
                    (4 * dx);
       const S& zx = w.zx[g.node(i, j)];
-      const S Q = -kappa * ((1.0 + zx * zx) * tz - zx * ts) * dx;  // upward
+      const S Q = -kappa *
+                  ((1.0 + zx * zx) * tz - correctionWeight(w.theta[c0], w.theta[c1]) * zx * ts) *
+                  dx;  // upward
       w.heat[c0] -= Q;
       w.heat[c1] += Q;
     }
@@ -55,7 +73,10 @@ void heatConduction(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
       const S kappa = 0.5 * (w.local[c].kappa_theta + w.local[cr].kappa_theta);
       const S slope = (w.zc[cr] - w.zc[c]) / dx;
       const S tz = 0.5 * (verticalGradient(w, i, k) + verticalGradient(w, r, k));
-      const S Q = -kappa * ((w.theta[cr] - w.theta[c]) / dx - slope * tz) * w.h[c];  // rightward
+      const S Q = -kappa *
+                  ((w.theta[cr] - w.theta[c]) / dx -
+                   correctionWeight(w.theta[c], w.theta[cr]) * slope * tz) *
+                  w.h[c];  // rightward
       w.heat[c] -= Q;
       w.heat[cr] += Q;
     }
