@@ -7,6 +7,7 @@
 #include <string>
 
 #include "hydro/ColumnPreconditioner.hpp"
+#include "hydro/Layer2DRemap.hpp"
 #include "hydro/Layer2DStart.hpp"
 
 namespace granwave::hydro {
@@ -94,10 +95,20 @@ Hydro2DResult HydroSimulation2D::run(const Hydro2DObserver& observe) {
   ColumnPreconditioner pre(op_);
   CvodeOptions co = solverOptions();
   co.preconditioner = pre.callbacks();
+  Hydro2DResult r;
+  if (opt_.remap_share > 0) {
+    co.events = 1;
+    co.event_functions = [this](double, const double* y, double* g) {
+      g[0] = thinnestLayerShare(op_, y) - opt_.remap_share;
+    };
+    co.on_event = [this, &r](double t, std::vector<double>& y, const std::vector<int>&) {
+      r.remap_heat += remapLayers(op_, t, y);
+      ++r.remaps;
+    };
+  }
   CvodeIntegrator cv(
       [this](double t, const double* y, double* yd) { return op_.rightHandSide(t, y, yd); }, 0.0,
       initialState(), co, [this](int k) { return op_.componentName(k); });
-  Hydro2DResult r;
   const double mass0 = op_.totalMass();
   long steps_before = 0;
   const std::size_t keep = static_cast<std::size_t>(std::max(1, opt_.window_cycles)) * M;

@@ -7,6 +7,9 @@
 // an observer (the surface and its spectrum are measured outside hydro/), and the last
 // `window_cycles` cycles are kept whole for the run file (docs/hydro.md, "The 2D model").
 //
+// With remap_share > 0 the layers are remapped vertically whenever one empties (hydro/
+// Layer2DRemap.hpp), as an event inside the integration.
+//
 // It fails fast as the 1D run does (HydroFailure): a CVODE failure or a cycle over its step
 // budget ends the run with one line saying where.
 #include <functional>
@@ -30,6 +33,10 @@ struct Hydro2DRunOptions {
   bool spread = true;        // start spread over the box (else settled on the plate)
   long max_steps_per_cycle = 20000;
   int krylov_dimension = 0;  // GMRES subspace (0 = CVODE's 5)
+  // The vertical remap (hydro/Layer2DRemap.hpp): when a cell's mass falls to this share of
+  // its column's and layer's (CVODE root finding on thinnestLayerShare), every column is
+  // remapped to its shares and the integration restarts. 0 = never.
+  double remap_share = 0;
 };
 
 // One recorded phase, plate frame. Nodes [i (N + 1) + j], cells [i N + k].
@@ -53,6 +60,8 @@ struct Hydro2DResult {
   double mass_drift = 0;  // max over phases of |total mass / initial - 1|
   CvodeStats stats;
   long preconditioner_jacobians = 0;
+  long remaps = 0;         // vertical remaps (Hydro2DRunOptions::remap_share)
+  double remap_heat = 0;   // J per unit depth the remaps moved into heat, summed
   double cpu_seconds = 0;  // of this thread
 };
 

@@ -102,6 +102,9 @@ struct HydroSpec {
   int columns = 0;  // 2D: columns across the width; 0 = one per 4 d
   // 2D: the RMS of the seeded relative perturbation of the columns' masses (run.seed).
   double perturbation = 0.01;
+  // 2D: the vertical remap (hydro/Layer2DRemap.hpp) when a cell's mass falls to this share of
+  // its column's and layer's; 0 = never.
+  double remap_share = 0.25;
   double rtol = 1e-4;  // CVODE relative tolerance
   double atol = 1e-8;  // absolute tolerance, relative to close packing (docs/hydro.md)
   HydroRestitutionModel restitution_model = HydroRestitutionModel::Velocity;

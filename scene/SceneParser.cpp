@@ -191,6 +191,7 @@ const Field kFields[] = {
     {"hydro", "cells", integer<kH, &HydroSpec::cells>},
     {"hydro", "columns", integer<kH, &HydroSpec::columns>},
     {"hydro", "perturbation", number<kH, &HydroSpec::perturbation>},
+    {"hydro", "remap_share", number<kH, &HydroSpec::remap_share>},
     {"hydro", "rtol", number<kH, &HydroSpec::rtol>},
     {"hydro", "atol", number<kH, &HydroSpec::atol>},
     {"hydro", "restitution_model", readHydroModel},

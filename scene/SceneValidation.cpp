@@ -137,6 +137,8 @@ void Checker::singleKeys() const {
          "is built for the 1D layer (hydro.dimensions = 1); the 2D layer has \"spring\" walls");
   within("hydro.perturbation", s_.hydro.perturbation, '[', 0.0, 0.1, ']',
          "RMS of the columns' relative masses");
+  within("hydro.remap_share", s_.hydro.remap_share, '[', 0.0, 0.9, ']',
+         "a cell's share of its layer's mass that triggers the 2D remap; 0 = never");
   atLeast("hydro.cells", s_.hydro.cells, 8);
   atMost("hydro.cells", s_.hydro.cells, 100000, "cells across the height");
   within("hydro.rtol", s_.hydro.rtol, '[', 1e-12, 0.1, ']', "relative tolerance");

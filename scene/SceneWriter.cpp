@@ -155,6 +155,7 @@ std::string sceneToToml(const Scene& s) {
   w.integer("cells", s.hydro.cells);
   w.integer("columns", s.hydro.columns);
   w.key("perturbation", s.hydro.perturbation);
+  w.key("remap_share", s.hydro.remap_share);
   w.key("rtol", s.hydro.rtol);
   w.key("atol", s.hydro.atol);
   w.key("restitution_model",

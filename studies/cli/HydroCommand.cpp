@@ -83,6 +83,8 @@ void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const s
       "{} linear iterations, {} preconditioner Jacobians\n",
       c.cpu_seconds, c.cpu_seconds / static_cast<double>(c.cycles), c.cycles, c.steps, c.rhs_evals,
       c.linear_iterations, c.preconditioner_jacobians);
+  fmt::print("remaps          {} (hydro.remap_share), {:.3g} J/m moved into heat\n", c.remaps,
+             c.remap_heat);
   if (c.surface.available)
     fmt::print("{}", surfaceSpectrumLine(c.surface));
   else

@@ -30,6 +30,7 @@ hydro::Hydro2DRunOptions hydro2DRunOptions(const Scene& scene, const SceneDerive
   o.atol_scale = one.atol_scale;
   o.initial_theta = one.initial_theta;
   o.spread = one.start == hydro::HydroRunOptions::Start::Spread;
+  o.remap_share = scene.hydro.remap_share;
   return o;
 }
 
@@ -64,6 +65,8 @@ Hydro2DRunContent hydro2DRunContent(const Scene& scene, const hydro::GranularHyd
   c.rhs_evals = r.stats.rhs_evals + r.stats.lin_rhs_evals;
   c.linear_iterations = r.stats.lin_iters;
   c.preconditioner_jacobians = r.preconditioner_jacobians;
+  c.remaps = r.remaps;
+  c.remap_heat = r.remap_heat;
   c.scene_toml = sceneToToml(scene);
   return c;
 }

@@ -57,6 +57,8 @@ void writeSolver(h5::File& f, const Hydro2DRunContent& c) {
   f.writeAttribute<std::int64_t>(s, "rhs_evals", c.rhs_evals);
   f.writeAttribute<std::int64_t>(s, "linear_iterations", c.linear_iterations);
   f.writeAttribute<std::int64_t>(s, "preconditioner_jacobians", c.preconditioner_jacobians);
+  f.writeAttribute<std::int64_t>(s, "remaps", c.remaps);
+  f.writeAttribute<double>(s, "remap_heat", c.remap_heat);
 }
 
 // Column i's left (side 0) and right (side 1) edge at node j: point (i (N + 1) + j) 2 + side.

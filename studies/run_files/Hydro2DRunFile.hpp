@@ -28,7 +28,9 @@ struct Hydro2DRunContent {
   double rtol = 0, cpu_seconds = 0, mass_drift = 0;
   std::int64_t cycles = 0, steps = 0, rhs_evals = 0, linear_iterations = 0;
   std::int64_t preconditioner_jacobians = 0;
-  std::string scene_toml;  // the fully resolved scene
+  std::int64_t remaps = 0;  // vertical remaps (hydro.remap_share)
+  double remap_heat = 0;    // J per unit depth the remaps moved into heat, summed
+  std::string scene_toml;   // the fully resolved scene
   std::size_t phases() const { return time.size(); }
 };
 
