@@ -46,6 +46,7 @@ inline void expectSameScene(const Scene& a, const Scene& b) {
   EXPECT_EQ(a.hydro.cells, b.hydro.cells);
   EXPECT_EQ(a.hydro.columns, b.hydro.columns);
   EXPECT_EQ(a.hydro.perturbation, b.hydro.perturbation);
+  EXPECT_EQ(a.hydro.remap_share, b.hydro.remap_share);
   EXPECT_EQ(a.hydro.rtol, b.hydro.rtol);
   EXPECT_EQ(a.hydro.atol, b.hydro.atol);
   EXPECT_EQ(a.hydro.restitution_model, b.hydro.restitution_model);

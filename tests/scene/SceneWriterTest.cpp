@@ -54,6 +54,7 @@ TEST(SceneToToml, RoundTripsASceneWithEveryKeyChanged) {
                                     "hydro.dimensions=2",
                                     "hydro.columns=12",
                                     "hydro.perturbation=0.003",
+                                    "hydro.remap_share=0.125",
                                     "hydro.rtol=1e-7",
                                     "hydro.atol=1e-11",
                                     "hydro.restitution_model=constant"});
