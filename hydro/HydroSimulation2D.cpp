@@ -101,8 +101,14 @@ Hydro2DResult HydroSimulation2D::run(const Hydro2DObserver& observe) {
     co.event_functions = [this](double, const double* y, double* g) {
       g[0] = thinnestLayerShare(op_, y) - opt_.remap_share;
     };
-    co.on_event = [this, &r](double t, std::vector<double>& y, const std::vector<int>&) {
-      r.remap_heat += remapLayers(op_, t, y);
+    co.on_event = [this, &r, T](double t, std::vector<double>& y, const std::vector<int>&) {
+      try {
+        r.remap_heat += remapLayers(op_, t, y);
+      } catch (const std::runtime_error& e) {  // a column emptied, or too much energy to move
+        const int cycle = static_cast<int>(std::floor(t / T)) + 1;
+        throw HydroFailure(std::string(e.what()) + " (cycle " + std::to_string(cycle) + ")", t,
+                           cycle);
+      }
       ++r.remaps;
     };
   }

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "Hydro2DTestSupport.hpp"
@@ -108,4 +109,14 @@ TEST(Hydro2DRemap, ThinnestShareIsTheEmptiedCellsFractionOfItsShare) {
   const double mu = 0.1 * M / 8, column = 8 * M / 8 - 0.9 * M / 8, layer = 4 * M / 8;
   const double total = 4 * M;
   EXPECT_NEAR(thinnestLayerShare(op, U.data()), mu * total / (column * layer), 1e-12);
+}
+
+TEST(Hydro2DRemap, RefusesAColumnThatHasLostAllItsMass) {
+  const ConstitutiveModel m = wetModel(false);
+  const HydroGeometry g = test::drivenBox(8);
+  const double M = 300 * kMass / (30 * kD);
+  const GranularHydro2D op(g, {4, 8 * kD, true}, m, std::vector<double>(4 * 8, M / 8));
+  std::vector<double> U(op.size(), 0.0);
+  for (int k = 0; k < op.cells(); ++k) U[op.fluxIndex(1, k)] = (M / 8) * op.dx();  // all leaves
+  EXPECT_THROW(remapLayers(op, 0.0, U), std::runtime_error);
 }
