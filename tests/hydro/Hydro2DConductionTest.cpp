@@ -35,8 +35,7 @@ std::vector<double> slopedLayerAtRest(const GranularHydro2D& op, const GranularH
 // this for some cells: without the correction's weight 3 of the 48 cells of each seed lose
 // heat, ln theta falling at 5e11 to 2.5e13 per second (the rate grows as 1/theta).
 TEST(Hydro2DConduction, CellFarColderThanEveryNeighbourWarmsOnSlopedLayers) {
-  const ConstitutiveModel m =
-      test::beadModel(RestitutionClosure::wet(0.91, 0.0698), RestitutionClosure::wet(0.91, 0.0698));
+  const ConstitutiveModel m = test::wetModel(false);
   const HydroGeometry g = test::drivenBox(8);
   const double M = 300 * kMass / (30 * kD);
   const GranularHydro1D pde(g, m, M);

@@ -11,17 +11,7 @@
 using namespace granwave::hydro;
 using test::kD;
 using test::kMass;
-
-namespace {
-
-ConstitutiveModel wetModel(bool rough) {
-  ConstitutiveModel m =
-      test::beadModel(RestitutionClosure::wet(0.91, 0.0698), RestitutionClosure::wet(0.91, 0.0698));
-  m.rough.enabled = rough;
-  return m;
-}
-
-}  // namespace
+using test::wetModel;
 
 namespace {
 

@@ -14,15 +14,9 @@
 using namespace granwave::hydro;
 using test::kD;
 using test::kMass;
+using test::wetModel;
 
 namespace {
-
-ConstitutiveModel wetModel(bool rough) {
-  ConstitutiveModel m =
-      test::beadModel(RestitutionClosure::wet(0.91, 0.0698), RestitutionClosure::wet(0.91, 0.0698));
-  m.rough.enabled = rough;
-  return m;
-}
 
 struct Masses {
   std::vector<double> column, layer;

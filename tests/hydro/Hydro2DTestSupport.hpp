@@ -12,6 +12,14 @@
 
 namespace granwave::hydro::test {
 
+// The paper's beads with the wet restitution law (e_inf 0.91, St_c/q 0.0698 m/s), smooth or rough.
+inline ConstitutiveModel wetModel(bool rough) {
+  ConstitutiveModel m =
+      beadModel(RestitutionClosure::wet(0.91, 0.0698), RestitutionClosure::wet(0.91, 0.0698));
+  m.rough.enabled = rough;
+  return m;
+}
+
 // The paper's box and drive at full amplitude from t = 0 (no ramp).
 inline HydroGeometry drivenBox(int cells) {
   HydroGeometry g = paperGeometry(cells);
