@@ -30,6 +30,9 @@ void addStudyCommand(CLI::App& app, StudyOptions& opt) {
       ->capture_default_str();
   cmd->add_flag("-q,--quiet", opt.quiet, "No progress lines");
   cmd->add_flag("--no-report", opt.no_report, "Write results.h5 only, no report.html");
+  cmd->add_flag("--plan", opt.plan,
+                "List the runs the study makes (method, cached or to do, label) and stop: "
+                "nothing is run or written");
 }
 
 int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
@@ -38,6 +41,7 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   const int file_jobs = file.integer("study", "jobs", 0);
   if (file_jobs < 0) file.fail("study", "jobs", "expected 0 (one per core) or more runs at a time");
   file.rejectUnknownKeys();
+  if (opt.plan) return printStudyPlan(opt, *study);
   return runStudyPlan(opt, file, *study, file_jobs, mpi, kVersion);
 }
 

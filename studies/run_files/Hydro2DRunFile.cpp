@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <system_error>
 
 #include "coarse_grain/FieldsFile.hpp"
@@ -149,6 +150,21 @@ void writeXdmf(const std::string& xdmf_path, const std::string& h5_name,
 }
 
 }  // namespace
+
+Hydro2DSolverRecord readHydro2DSolver(const std::string& path) {
+  const h5::File f = h5::File::openReadOnly(path);
+  if (!f.hasAttribute("/", "format") || f.readStringAttribute("/", "format") != kHydro2DRunFormat)
+    throw std::runtime_error(path + ": not a 2D hydro run file (format " + kHydro2DRunFormat + ")");
+  const std::string s = "/solver";
+  Hydro2DSolverRecord r;
+  r.cycles = f.readAttribute<std::int64_t>(s, "cycles");
+  r.steps = f.readAttribute<std::int64_t>(s, "steps");
+  r.rhs_evals = f.readAttribute<std::int64_t>(s, "rhs_evals");
+  r.remaps = f.readAttribute<std::int64_t>(s, "remaps");
+  r.cpu_seconds = f.readAttribute<double>(s, "cpu_seconds");
+  r.mass_drift = f.readAttribute<double>(s, "mass_drift");
+  return r;
+}
 
 void writeHydro2DRunFile(const std::string& path, const Hydro2DRunContent& c) {
   h5::AtomicFile af(path);

@@ -37,6 +37,14 @@ struct Hydro2DRunContent {
 // The file's root attribute "format": its name and layout version.
 inline constexpr const char* kHydro2DRunFormat = "granwave-hydro2d-1";
 
+// The /solver group of a 2D run file: what the run cost and did (a run's cost table, the
+// studies that read 2D runs).
+struct Hydro2DSolverRecord {
+  std::int64_t cycles = 0, steps = 0, rhs_evals = 0, remaps = 0;
+  double cpu_seconds = 0, mass_drift = 0;
+};
+Hydro2DSolverRecord readHydro2DSolver(const std::string& path);
+
 // Writes the HDF5 file and its sidecar (the same path with .xdmf), each atomically; the pair
 // or neither (the HDF5 file is removed again if the sidecar cannot be written).
 void writeHydro2DRunFile(const std::string& path, const Hydro2DRunContent& content);

@@ -33,7 +33,13 @@ RunCache::RunCache(std::string directory, std::string build_id, ReadableCheck re
     : directory_(std::move(directory)),
       build_id_(std::move(build_id)),
       readable_(std::move(readable)) {
-  std::filesystem::create_directories(directory_);
+  if (!directory_.empty()) std::filesystem::create_directories(directory_);
+}
+
+RunCache RunCache::lookOnly(std::string directory, std::string build_id) {
+  RunCache c(std::string(), std::move(build_id));  // "" makes no directory
+  c.directory_ = std::move(directory);
+  return c;
 }
 
 // Outputs are renamed into place complete and the record follows them, so an output that

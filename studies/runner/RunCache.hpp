@@ -22,6 +22,9 @@ class RunCache {
   // does not count: the run is made again and its output replaced, as for a removed output.
   RunCache(std::string directory, std::string build_id, ReadableCheck readable = {});
 
+  // A cache only looked into (granwave study --plan): the directory is not made.
+  static RunCache lookOnly(std::string directory, std::string build_id);
+
   const std::string& directory() const { return directory_; }
   // The record with its stem filled in (and ok/cpu/... if it is done). A particle run's scene
   // gets the trajectory stride that keeps its first and last frame only (RunCache.cpp).

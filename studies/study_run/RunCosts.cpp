@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "studies/contract/StudyResults.hpp"
+#include "studies/run_files/Hydro2DRunFile.hpp"
 #include "studies/run_files/HydroRunFile.hpp"
 #include "studies/run_files/RunOutputs.hpp"
 
@@ -28,6 +29,10 @@ void writeRunCosts(const RunSet& runs, h5::File& f, Report& report) {
         const LammpsTrajectory l = readLammpsTrajectory(r.lammpsPath());
         work_value = static_cast<double>(l.last_step);
         w = fmt::format("{:.3g} time steps", work_value);
+      } else if (hydro && r.request.scene.hydro.dimensions == 2) {
+        const Hydro2DSolverRecord h = readHydro2DSolver(r.hydroPath());
+        work_value = static_cast<double>(h.steps);
+        w = fmt::format("{} steps / {} RHS", h.steps, h.rhs_evals);
       } else if (hydro) {
         const HydroRunContent h = readHydroRunFile(r.hydroPath());
         work_value = static_cast<double>(h.steps);

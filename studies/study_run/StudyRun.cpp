@@ -111,6 +111,33 @@ int jobsOf(const StudyRunOptions& opt, int file_jobs, const MpiSession& mpi) {
 
 }  // namespace
 
+int printStudyPlan(const StudyRunOptions& opt, const Study& study) {
+  std::string outdir = opt.output;
+  if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
+  const std::string cache_dir =
+      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  const RunCache cache = RunCache::lookOnly(cache_dir, buildIdentity());
+  std::set<std::string> distinct, held;
+  int particles = 0, hydro = 0, lammps = 0;
+  for (const RunRequest& q : study.plan()) {
+    RunRecord r = cache.record(q);
+    if (!distinct.insert(r.stem).second) continue;  // the same run under a second label
+    const bool cached = cache.load(r) && r.ok;
+    if (cached) held.insert(r.stem);
+    const char* kind = q.kind == RunKind::Particles ? "particles"
+                       : q.kind == RunKind::Hydro   ? "hydro"
+                                                    : "lammps";
+    (q.kind == RunKind::Particles ? particles : q.kind == RunKind::Hydro ? hydro : lammps)++;
+    fmt::print("{:<9}  {:<8}  {}\n", kind, cached ? "cached" : "to do", q.label);
+  }
+  fmt::print("study           {} ({})\n", opt.study_path, study.title());
+  fmt::print("runs            {} ({} particles, {} hydro, {} LAMMPS); {} held by {}, {} to do\n",
+             distinct.size(), particles, hydro, lammps, held.size(), cache_dir,
+             distinct.size() - held.size());
+  fmt::print("follow-ups      decided from the runs' results, after them (none listed here)\n");
+  return 0;
+}
+
 int runStudyPlan(const StudyRunOptions& opt, const StudyFile& file, const Study& study,
                  int file_jobs, const MpiSession& mpi, const std::string& program_version) {
   const int jobs = jobsOf(opt, file_jobs, mpi);

@@ -19,7 +19,12 @@ struct StudyRunOptions {
   double checkpoint_every = 300;  // s of wall time between a particle run's checkpoints
   bool quiet = false;
   bool no_report = false;  // results.h5 only (no Python needed)
+  bool plan = false;       // list the runs and the cache's share of them; run and write nothing
 };
+
+// --plan: every run of the study's first round on stdout (method, cached or to do, label) and
+// their count; nothing is run, made or written. Returns the exit code.
+int printStudyPlan(const StudyRunOptions& options, const Study& study);
 
 // `study` was made from `file`, whose keys are all read. `file_jobs` is its [study] jobs.
 // Under mpirun rank 0 coordinates and writes the outputs; the other ranks run what they are

@@ -14,15 +14,19 @@ double shareError(double w, int n) {
   return n > 0 ? std::sqrt(std::max(w * (1 - w), 0.25 / n) / n) : 0.5;
 }
 
-SurfaceWaveOnset onsetOf(const SurfaceWavesConfig& c, int variant, double f,
-                         const std::vector<SurfaceWaveSummary>& points) {
+}  // namespace
+
+SurfaceWaveOnset waveOnset(const std::vector<double>& gammas, int variant, double f, double width_d,
+                           const std::vector<SurfaceWaveSummary>& points) {
   SurfaceWaveOnset o;
   o.variant = variant;
   o.frequency = f;
+  o.width_d = width_d;
   std::vector<const SurfaceWaveSummary*> curve;
-  for (double g : c.gammas)
+  for (double g : gammas)
     for (const SurfaceWaveSummary& s : points)
-      if (s.point.variant == variant && s.point.frequency == f && s.point.gamma == g && s.ok > 0)
+      if (s.point.variant == variant && s.point.frequency == f && s.point.width_d == width_d &&
+          s.point.gamma == g && s.ok > 0)
         curve.push_back(&s);
   if (curve.empty()) {
     o.bound = "no runs";
@@ -51,6 +55,8 @@ SurfaceWaveOnset onsetOf(const SurfaceWavesConfig& c, int variant, double f,
   return o;
 }
 
+namespace {
+
 std::vector<double> ranks(const std::vector<double>& v) {
   std::vector<std::size_t> idx(v.size());
   std::iota(idx.begin(), idx.end(), 0);
@@ -71,7 +77,8 @@ std::vector<SurfaceWaveOnset> waveOnsets(const SurfaceWavesConfig& c,
                                          const std::vector<SurfaceWaveSummary>& points) {
   std::vector<SurfaceWaveOnset> out;
   for (std::size_t v = 0; v < c.variants.size(); ++v)
-    for (double f : c.frequencies) out.push_back(onsetOf(c, static_cast<int>(v), f, points));
+    for (double f : c.frequencies)
+      out.push_back(waveOnset(c.gammas, static_cast<int>(v), f, c.width_d, points));
   return out;
 }
 

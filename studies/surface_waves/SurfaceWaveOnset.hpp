@@ -19,6 +19,10 @@
 
 namespace granwave {
 
+// The onset of one variant at frequency f in the box of width_d over `gammas` (in order).
+SurfaceWaveOnset waveOnset(const std::vector<double>& gammas, int variant, double f, double width_d,
+                           const std::vector<SurfaceWaveSummary>& points);
+
 std::vector<SurfaceWaveOnset> waveOnsets(const SurfaceWavesConfig& c,
                                          const std::vector<SurfaceWaveSummary>& onset_points);
 

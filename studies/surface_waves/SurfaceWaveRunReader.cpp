@@ -43,7 +43,39 @@ void readDissipation(const std::string& run_path, double frequency, SurfaceWaveR
   r.e_eff = de > 0 ? std::sqrt(std::max(0.0, 1.0 - dl / de)) : NAN;
 }
 
+// The spectrum's numbers of one run.
+void readSpectrum(const SurfaceWaveAnalysis& s, SurfaceWaveRun& r) {
+  r.spectrum = s.available;
+  if (!s.available) return;
+  r.amplitude_d = {s.amplitude_d, s.amplitude_error_d};
+  // The wavelength of the windows that have a wave (a window without one holds noise).
+  std::vector<double> lambda;
+  for (const SurfaceWindow& w : s.windows)
+    if (w.wave) lambda.push_back(w.wavelength_d);
+  r.wavelength_d = meanAndStandardError(lambda);
+  if (lambda.size() == 1) r.wavelength_d.error = 0;
+  r.share = {s.subharmonic_share, s.subharmonic_share_error};
+  r.noise_d = s.noise_d;
+  r.wave_fraction = s.wave_fraction;
+  r.windows = static_cast<int>(s.windows.size());
+  r.standing_mode = s.standing_mode;
+}
+
 }  // namespace
+
+SurfaceWaveRun readContinuumWaveRun(const RunRecord& rec, const SurfaceWavePoint& point) {
+  SurfaceWaveRun r;
+  r.point = point;
+  r.label = rec.request.label;
+  r.ok = rec.ok;
+  r.rms_vx = r.e_eff = r.loss_per_cycle = NAN;  // not measured on the continuum
+  if (!rec.ok) {
+    r.failure = rec.message;
+    return r;
+  }
+  readSpectrum(readSurfaceWaves(rec.hydroPath()), r);
+  return r;
+}
 
 SurfaceWaveRun readSurfaceWaveRun(const RunRecord& rec, const SurfaceWavePoint& point) {
   SurfaceWaveRun r;
@@ -54,22 +86,7 @@ SurfaceWaveRun readSurfaceWaveRun(const RunRecord& rec, const SurfaceWavePoint& 
     r.failure = rec.message;
     return r;
   }
-  const SurfaceWaveAnalysis s = readSurfaceWaves(rec.fieldsPath());
-  r.spectrum = s.available;
-  if (s.available) {
-    r.amplitude_d = {s.amplitude_d, s.amplitude_error_d};
-    // The wavelength of the windows that have a wave (a window without one holds noise).
-    std::vector<double> lambda;
-    for (const SurfaceWindow& w : s.windows)
-      if (w.wave) lambda.push_back(w.wavelength_d);
-    r.wavelength_d = meanAndStandardError(lambda);
-    if (lambda.size() == 1) r.wavelength_d.error = 0;
-    r.share = {s.subharmonic_share, s.subharmonic_share_error};
-    r.noise_d = s.noise_d;
-    r.wave_fraction = s.wave_fraction;
-    r.windows = static_cast<int>(s.windows.size());
-    r.standing_mode = s.standing_mode;
-  }
+  readSpectrum(readSurfaceWaves(rec.fieldsPath()), r);
   const LayerPatterns lp = readLayerPatterns(rec.fieldsPath());
   r.period = lp.period;
   if (lp.available) {

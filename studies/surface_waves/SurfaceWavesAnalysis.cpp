@@ -8,6 +8,7 @@
 
 #include "coarse_grain/FieldsReader.hpp"
 #include "coarse_grain/SurfaceWavesFile.hpp"
+#include "studies/surface_waves/SurfaceWaveContinuum.hpp"
 #include "studies/surface_waves/SurfaceWaveOnset.hpp"
 #include "studies/surface_waves/SurfaceWaveRunReader.hpp"
 #include "studies/wave_analysis/WaveMomentumRatio.hpp"
@@ -171,12 +172,12 @@ std::vector<ExampleSpectrum> examples(const SurfaceWavesConfig& c, const RunSet&
 
 }  // namespace
 
-std::vector<SurfaceWaveSummary> summarise(const SurfaceWavesConfig& c,
-                                          const std::vector<SurfaceWaveRun>& runs,
-                                          const std::vector<SurfaceWavePoint>& points) {
+std::vector<SurfaceWaveSummary> summarise(const std::vector<SurfaceWaveRun>& runs,
+                                          const std::vector<SurfaceWavePoint>& points,
+                                          int first_seed) {
   std::vector<SurfaceWaveSummary> out;
   for (const SurfaceWavePoint& p : points) {
-    if (p.seed != c.seeds.front()) continue;
+    if (p.seed != first_seed) continue;
     std::vector<const SurfaceWaveRun*> same;
     for (const SurfaceWaveRun& r : runs)
       if (samePoint(r.point, p)) same.push_back(&r);
@@ -188,7 +189,7 @@ std::vector<SurfaceWaveSummary> summarise(const SurfaceWavesConfig& c,
 SurfaceWavesResults analyseSurfaceWavesStudy(const SurfaceWavesConfig& c, const RunSet& runs) {
   SurfaceWavesResults r;
   std::vector<SurfaceWavePoint> all = c.onsetPoints();
-  for (const auto& scan : {c.widthPoints(), c.depthPoints()})
+  for (const auto& scan : {c.widthPoints(), c.depthPoints(), c.continuumParticlePoints()})
     all.insert(all.end(), scan.begin(), scan.end());
   for (const SurfaceWavePoint& p : all) {
     const std::string label = c.label(p);
@@ -200,9 +201,10 @@ SurfaceWavesResults analyseSurfaceWavesStudy(const SurfaceWavesConfig& c, const 
     r.cpu_seconds += rec.cpu;
     r.failed_runs += !rec.ok;
   }
-  r.onset = summarise(c, r.runs, c.onsetPoints());
-  r.widths = summarise(c, r.runs, c.widthPoints());
-  r.depths = summarise(c, r.runs, c.depthPoints());
+  const int first = c.seeds.front();
+  r.onset = summarise(r.runs, c.onsetPoints(), first);
+  r.widths = summarise(r.runs, c.widthPoints(), first);
+  r.depths = summarise(r.runs, c.depthPoints(), first);
   r.onsets = waveOnsets(c, r.onset);
   r.dissipation = variantDissipation(c, r.onset, r.onsets);
   rankCorrelation(r.dissipation, r.rank_correlation, r.ranked_variants);
@@ -210,6 +212,13 @@ SurfaceWavesResults analyseSurfaceWavesStudy(const SurfaceWavesConfig& c, const 
   splitRatios(r);
   r.width_verdict = widthVerdict(c, r.widths);
   r.examples = examples(c, runs, r.runs);
+  r.continuum = continuumBesideParticles(c, runs, r.runs);
+  r.continuum_onsets = continuumOnsets(c, r.continuum);
+  for (const SurfaceWavePoint& p : c.continuumPoints()) {
+    const RunRecord& rec = runs.get(c.continuumLabel(p));
+    r.cpu_seconds += rec.cpu;
+    r.failed_runs += !rec.ok;
+  }
   return r;
 }
 

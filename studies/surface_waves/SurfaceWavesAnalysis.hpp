@@ -3,6 +3,7 @@
 // (docs/studies.md): every run's wave (the space-time spectrum of its surface beside the
 // stability study's yes/no detector), each point combined over seeds, the onset Gamma_c(f)
 // per variant, the width and depth scans, r_x with its noise floor, and the dissipation axis.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,7 @@ struct SurfaceWaveSummary {
 
 struct SurfaceWaveOnset {
   int variant = 0;
-  double frequency = 0;
+  double frequency = 0, width_d = 0;
   Measurement gamma_c;  // invalid when no crossing; then `bound` says where it lies
   std::string bound;
 };
@@ -71,6 +72,17 @@ struct ExampleSpectrum {
   double width_d = 0, diameter = 0;
 };
 
+// The 2D continuum beside the particles at one point of [continuum] (SurfaceWaveContinuum.hpp).
+struct ContinuumWavePair {
+  SurfaceWaveSummary continuum, particles;
+  // CPU seconds (user + sys of the run) per drive cycle, mean over the point's runs that
+  // finished: the two models' cost in the same box.
+  double continuum_cpu_per_cycle = NAN, particles_cpu_per_cycle = NAN;
+  std::string failure;           // the first failed continuum run's message
+  Measurement wavelength_ratio;  // continuum / particles, where both wave
+  long long remaps = 0;          // vertical remaps of the continuum's runs, summed
+};
+
 struct SurfaceWavesResults {
   std::vector<SurfaceWaveRun> runs;
   std::vector<SurfaceWaveSummary> onset, widths, depths;
@@ -82,6 +94,10 @@ struct SurfaceWavesResults {
   int ranked_variants = 0;
   // The width scan's verdict: lambda at the two widest boxes agree (Faraday) or scale with L.
   std::string width_verdict;
+  // The 2D continuum ([continuum]): per point beside the particles, and its onset per
+  // variant and width over the continuum's Gamma.
+  std::vector<ContinuumWavePair> continuum;
+  std::vector<SurfaceWaveOnset> continuum_onsets;
   // The spectrum of the run with the strongest f/2 wave of each variant (for figures).
   std::vector<ExampleSpectrum> examples;
   double cpu_seconds = 0;
@@ -92,8 +108,8 @@ SurfaceWavesResults analyseSurfaceWavesStudy(const SurfaceWavesConfig& config, c
 void writeSurfaceWavesResults(h5::File& file, const SurfaceWavesResults& results);
 
 // Summary of the runs of `points` (several seeds each), in the order of their first seed.
-std::vector<SurfaceWaveSummary> summarise(const SurfaceWavesConfig& c,
-                                          const std::vector<SurfaceWaveRun>& runs,
-                                          const std::vector<SurfaceWavePoint>& points);
+std::vector<SurfaceWaveSummary> summarise(const std::vector<SurfaceWaveRun>& runs,
+                                          const std::vector<SurfaceWavePoint>& points,
+                                          int first_seed);
 
 }  // namespace granwave

@@ -204,6 +204,7 @@ void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& 
   addDispersion(c, r, dispersion);
   addDissipation(c, r, report);
   addMomentumRatio(r, report);
+  addContinuum(c, r, report);
   ReportSection& all = report.section("Every point", "");
   all.add(everyPoint(c, r.onset, "Onset scan (base box)"));
   all.add(everyPoint(c, r.widths, "Width scan"));

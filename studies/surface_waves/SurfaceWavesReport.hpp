@@ -18,6 +18,11 @@ void addDispersion(const SurfaceWavesConfig& config, const SurfaceWavesResults& 
 void addWidthScan(const SurfaceWavesConfig& config, const SurfaceWavesResults& results,
                   ReportSection& section);
 
+// The 2D continuum beside the particles ([continuum]; SurfaceWavesContinuumReport.cpp): a
+// section of its own, none without continuum points.
+void addContinuum(const SurfaceWavesConfig& config, const SurfaceWavesResults& results,
+                  Report& report);
+
 // "ED dry W=120 periodic rows=10 f=10 Gamma=4" style name of a point (no seed).
 std::string pointName(const SurfaceWavesConfig& config, const SurfaceWavePoint& point);
 

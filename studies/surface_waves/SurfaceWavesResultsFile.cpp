@@ -38,6 +38,49 @@ void writeSummaries(h5::File& f, const std::string& scan,
   }
 }
 
+// A summary's spectrum numbers under `prefix` (continuum_ or particles_).
+void putSpectrum(h5::File& f, const std::string& g, const std::string& prefix,
+                 const SurfaceWaveSummary& s) {
+  putValue(f, g, prefix + "runs_ok", s.ok);
+  putValue(f, g, prefix + "windows", s.windows);
+  putValue(f, g, prefix + "wave_fraction", s.wave_fraction);
+  putValue(f, g, prefix + "standing_mode", s.standing_mode);
+  putMeasurement(f, g, prefix + "amplitude_d", s.amplitude_d);
+  putMeasurement(f, g, prefix + "wavelength_d", s.wavelength_d);
+  putMeasurement(f, g, prefix + "subharmonic_share", s.share);
+}
+
+void writeContinuum(h5::File& f, const SurfaceWavesResults& r) {
+  for (std::size_t i = 0; i < r.continuum.size(); ++i) {
+    const ContinuumWavePair& p = r.continuum[i];
+    const std::string g = fmt::format("{}/continuum/point_{:03d}", kRoot, i);
+    f.createGroup(g);
+    putValue(f, g, "variant", p.continuum.point.variant);
+    putValue(f, g, "width_d", p.continuum.point.width_d);
+    putValue(f, g, "rows", p.continuum.point.rows);
+    putValue(f, g, "frequency", p.continuum.point.frequency);
+    putValue(f, g, "gamma", p.continuum.point.gamma);
+    putSpectrum(f, g, "continuum_", p.continuum);
+    putSpectrum(f, g, "particles_", p.particles);
+    putValue(f, g, "continuum_cpu_per_cycle", p.continuum_cpu_per_cycle);
+    putValue(f, g, "particles_cpu_per_cycle", p.particles_cpu_per_cycle);
+    putValue(f, g, "continuum_remaps", static_cast<double>(p.remaps));
+    putMeasurement(f, g, "wavelength_ratio", p.wavelength_ratio);
+    f.writeStringAttribute(g, "continuum_failure", p.failure);
+  }
+  for (std::size_t i = 0; i < r.continuum_onsets.size(); ++i) {
+    const SurfaceWaveOnset& o = r.continuum_onsets[i];
+    const std::string g = fmt::format("{}/continuum_onsets/onset_{:03d}", kRoot, i);
+    f.createGroup(g);
+    f.writeStringAttribute(g, "model", i % 2 == 0 ? "continuum" : "particles");
+    putValue(f, g, "variant", o.variant);
+    putValue(f, g, "width_d", o.width_d);
+    putValue(f, g, "frequency", o.frequency);
+    putMeasurement(f, g, "gamma_c", o.gamma_c);
+    f.writeStringAttribute(g, "bound", o.bound);
+  }
+}
+
 void writeOnsets(h5::File& f, const SurfaceWavesResults& r) {
   for (std::size_t i = 0; i < r.onsets.size(); ++i) {
     const SurfaceWaveOnset& o = r.onsets[i];
@@ -88,13 +131,15 @@ void writeMomentumRatios(h5::File& f, const SurfaceWavesResults& r) {
 
 void writeSurfaceWavesResults(h5::File& f, const SurfaceWavesResults& r) {
   f.createGroup(kRoot);
-  for (const char* scan : {"onset", "widths", "depths", "onsets", "dissipation"})
+  for (const char* scan :
+       {"onset", "widths", "depths", "onsets", "dissipation", "continuum", "continuum_onsets"})
     f.createGroup(kRoot + "/" + scan);
   writeSummaries(f, "onset", r.onset);
   writeSummaries(f, "widths", r.widths);
   writeSummaries(f, "depths", r.depths);
   writeOnsets(f, r);
   writeMomentumRatios(f, r);
+  writeContinuum(f, r);
   f.writeStringAttribute(kRoot, "width_verdict", r.width_verdict);
   putValue(f, kRoot, "cpu_seconds", r.cpu_seconds);
   putValue(f, kRoot, "failed_runs", r.failed_runs);

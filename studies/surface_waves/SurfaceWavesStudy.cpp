@@ -97,6 +97,33 @@ void readScans(StudyFile& f, SurfaceWavesConfig& c) {
       f.fail("widths", "boundaries", "'" + b + "': valid boundaries are periodic, walls");
 }
 
+// [continuum]: absent or without variants, no continuum runs.
+void readContinuum(StudyFile& f, SurfaceWavesConfig& c) {
+  ContinuumWavesConfig& k = c.continuum;
+  k.variants = variantList(f, "continuum", c, {});
+  k.widths_d = f.numbers("continuum", "widths", {c.width_d});
+  k.gammas = f.numbers("continuum", "gammas", k.gammas);
+  k.frequency = f.number("continuum", "frequency", c.frequencies.front());
+  k.cycles = f.integer("continuum", "cycles", k.cycles);
+  k.columns = f.integer("continuum", "columns", k.columns);
+  k.cells = f.integer("continuum", "cells", k.cells);
+  k.seeds = f.integers("continuum", "seeds", k.seeds);
+  if (k.variants.empty()) return;
+  requirePositive(f, "continuum", "widths", k.widths_d);
+  requirePositive(f, "continuum", "gammas", k.gammas);
+  if (!(k.frequency > 0)) f.fail("continuum", "frequency", "expected a positive frequency");
+  for (double w : k.widths_d)
+    if (std::abs(w - std::round(w)) > 1e-9) f.fail("continuum", "widths", "widths are whole d");
+  // The spectrum is taken over the run's second half in windows of 10 cycles.
+  if (k.cycles < 20)
+    f.fail("continuum", "cycles",
+           "expected at least 20 cycles (a window of 10 in the second half)");
+  if (k.columns < 0) f.fail("continuum", "columns", "expected 0 (one per 4 d) or more columns");
+  if (k.cells < 4) f.fail("continuum", "cells", "expected at least 4 cells per column");
+  if (k.seeds.empty() || std::set<int>(k.seeds.begin(), k.seeds.end()).size() != k.seeds.size())
+    f.fail("continuum", "seeds", "expected distinct seeds");
+}
+
 }  // namespace
 
 int SurfaceWavesConfig::variantIndex(const std::string& name) const {
@@ -139,6 +166,30 @@ std::vector<SurfaceWavePoint> SurfaceWavesConfig::depthPoints() const {
   return out;
 }
 
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::continuumPoints() const {
+  std::vector<SurfaceWavePoint> out;
+  for (int v : continuum.variants)
+    for (double w : continuum.widths_d)
+      for (double g : continuum.gammas)
+        for (int s : continuum.seeds) out.push_back({v, w, true, rows, continuum.frequency, g, s});
+  return out;
+}
+
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::continuumParticlePoints() const {
+  std::vector<SurfaceWavePoint> out;
+  for (int v : continuum.variants)
+    for (double w : continuum.widths_d)
+      for (double g : continuum.gammas)
+        for (int s : seeds) out.push_back({v, w, true, rows, continuum.frequency, g, s});
+  return out;
+}
+
+std::string SurfaceWavesConfig::continuumLabel(const SurfaceWavePoint& p) const {
+  return fmt::format("2D continuum {} W={} rows={} f={} Gamma={} seed={}", variants[p.variant].name,
+                     formatCompact(p.width_d), p.rows, formatCompact(p.frequency),
+                     formatCompact(p.gamma), p.seed);
+}
+
 SurfaceWavesStudy::SurfaceWavesStudy(StudyFile& f) {
   c_.scenes = LawScenes::read(f);
   c_.variants = readVariants(f);
@@ -154,11 +205,43 @@ SurfaceWavesStudy::SurfaceWavesStudy(StudyFile& f) {
     f.fail("particles", "seeds", "expected distinct seeds");
   if (c_.blocks < 2) f.fail("particles", "blocks", "expected at least 2 blocks");
   readScans(f, c_);
+  readContinuum(f, c_);
   c_.scenes.loadBase(f);
   c_.diameter = c_.scenes.base[0].particles.diameter;
   addRequests(f, c_.onsetPoints());
   addRequests(f, c_.widthPoints());
   addRequests(f, c_.depthPoints());
+  addRequests(f, c_.continuumParticlePoints());
+  addContinuumRequests(f);
+}
+
+std::vector<std::string> SurfaceWavesStudy::pointOverrides(const SurfaceWavePoint& p,
+                                                           int cycles) const {
+  // The paper's box keeps about 21 d of free height above its 10 rows; so does every depth.
+  const double height_d = 30.0 + 0.5 * std::sqrt(3.0) * (p.rows - 10);
+  std::vector<std::string> set = c_.variants[p.variant].set;
+  const int count = static_cast<int>(std::lround(p.width_d)) * p.rows;
+  set.push_back(fmt::format("particles.count={}", count));
+  set.push_back(fmt::format("container.width={}", formatCompact(p.width_d * c_.diameter)));
+  set.push_back(fmt::format("container.height={}", formatCompact(height_d * c_.diameter)));
+  set.push_back(fmt::format("container.periodic_x={}", p.periodic ? "true" : "false"));
+  set.push_back(fmt::format("drive.frequency={}", formatCompact(p.frequency)));
+  set.push_back(fmt::format("drive.gamma={}", formatCompact(p.gamma)));
+  set.push_back(fmt::format("run.seed={}", p.seed));
+  set.push_back(fmt::format("run.duration={}", formatCompact(cycles / p.frequency)));
+  return set;
+}
+
+void SurfaceWavesStudy::addContinuumRequests(const StudyFile& f) {
+  const ContinuumWavesConfig& k = c_.continuum;
+  for (const SurfaceWavePoint& p : c_.continuumPoints()) {
+    std::vector<std::string> set = pointOverrides(p, k.cycles);
+    set.push_back(fmt::format("hydro.dimensions={}", 2));
+    set.push_back(fmt::format("hydro.columns={}", k.columns));
+    set.push_back(fmt::format("hydro.cells={}", k.cells));
+    requests_.push_back(runRequest(RunKind::Hydro, c_.continuumLabel(p),
+                                   c_.scenes.scene(f, c_.variants[p.variant].law, set)));
+  }
 }
 
 void SurfaceWavesStudy::addRequests(const StudyFile& f,
@@ -168,20 +251,9 @@ void SurfaceWavesStudy::addRequests(const StudyFile& f,
     bool known = false;
     for (const RunRequest& q : requests_) known = known || q.label == label;
     if (known) continue;  // a point shared by two scans runs once
-    const SurfaceWaveVariant& v = c_.variants[p.variant];
-    // The paper's box keeps about 21 d of free height above its 10 rows; so does every depth.
-    const double height_d = 30.0 + 0.5 * std::sqrt(3.0) * (p.rows - 10);
-    std::vector<std::string> set = v.set;
-    const int count = static_cast<int>(std::lround(p.width_d)) * p.rows;
-    set.push_back(fmt::format("particles.count={}", count));
-    set.push_back(fmt::format("container.width={}", formatCompact(p.width_d * c_.diameter)));
-    set.push_back(fmt::format("container.height={}", formatCompact(height_d * c_.diameter)));
-    set.push_back(fmt::format("container.periodic_x={}", p.periodic ? "true" : "false"));
-    set.push_back(fmt::format("drive.frequency={}", formatCompact(p.frequency)));
-    set.push_back(fmt::format("drive.gamma={}", formatCompact(p.gamma)));
-    set.push_back(fmt::format("run.seed={}", p.seed));
-    set.push_back(fmt::format("run.duration={}", formatCompact(c_.cycles / p.frequency)));
-    RunRequest q = runRequest(RunKind::Particles, label, c_.scenes.scene(f, v.law, set));
+    const std::vector<std::string> set = pointOverrides(p, c_.cycles);
+    RunRequest q =
+        runRequest(RunKind::Particles, label, c_.scenes.scene(f, c_.variants[p.variant].law, set));
     q.window_cycles = c_.window;
     q.blocks = c_.blocks;
     requests_.push_back(std::move(q));

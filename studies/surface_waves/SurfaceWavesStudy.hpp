@@ -33,6 +33,21 @@ struct SurfaceWavePoint {
   int seed = 1;
 };
 
+// The 2D continuum (hydro.dimensions = 2; docs/hydro.md, "The 2D model") beside the
+// particles: every variant of `variants` at every Gamma and width, periodic (the 2D continuum
+// between side walls is not done), the base box's rows, at one frequency, one continuum run
+// per seed (the seed perturbs its column masses); the particles at the same points are
+// planned too. Empty `variants`: no continuum runs.
+struct ContinuumWavesConfig {
+  std::vector<int> variants;  // indices into SurfaceWavesConfig::variants
+  std::vector<double> widths_d{120}, gammas{4};
+  double frequency = 10;
+  int cycles = 80;  // the spectrum is taken over the second half, as the particles' transient
+  int columns = 0;  // hydro.columns (0: one per 4 d of the width)
+  int cells = 40;   // hydro.cells per column
+  std::vector<int> seeds{1};
+};
+
 struct SurfaceWavesConfig {
   LawScenes scenes;
   std::vector<SurfaceWaveVariant> variants;
@@ -57,11 +72,17 @@ struct SurfaceWavesConfig {
   // The dissipation of a variant is read at this Gamma and the first frequency.
   double dissipation_gamma = 3;
   double diameter = 0.002;  // m, of the base scenes
+  ContinuumWavesConfig continuum;
 
   std::string label(const SurfaceWavePoint& p) const;
   std::vector<SurfaceWavePoint> onsetPoints() const;
   std::vector<SurfaceWavePoint> widthPoints() const;
   std::vector<SurfaceWavePoint> depthPoints() const;
+  // The continuum's points (one per continuum seed) and the particles' at the same drive,
+  // box and rows (one per particle seed).
+  std::vector<SurfaceWavePoint> continuumPoints() const;
+  std::vector<SurfaceWavePoint> continuumParticlePoints() const;
+  std::string continuumLabel(const SurfaceWavePoint& p) const;
   int variantIndex(const std::string& name) const;  // -1 if absent
 };
 
@@ -76,6 +97,9 @@ class SurfaceWavesStudy final : public Study {
 
  private:
   void addRequests(const StudyFile& f, const std::vector<SurfaceWavePoint>& points);
+  void addContinuumRequests(const StudyFile& f);
+  // The scene overrides of a point: its variant's, then box, drive, seed and duration.
+  std::vector<std::string> pointOverrides(const SurfaceWavePoint& p, int cycles) const;
   SurfaceWavesConfig c_;
   std::vector<RunRequest> requests_;
 };

@@ -94,3 +94,19 @@ TEST_F(StudyCli, MissingStudyFileIsAnError) {
   EXPECT_NE(r.err.find("nosuch-study.toml"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir_ / "out"));
 }
+
+// Every study file shipped in studies/ is one a user is told to run: --plan reads it (every key
+// known, every scene found) and lists its runs, and runs, makes and writes nothing.
+TEST_F(StudyCli, EveryShippedStudyFilePlansItsRunsAndPlanWritesNothing) {
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(GRANWAVE_SOURCE_DIR "/studies")) {
+    if (entry.path().extension() != ".toml") continue;
+    ++files;
+    const Result r = run("study " + entry.path().string() + " -o out --plan");
+    EXPECT_EQ(r.code, 0) << entry.path() << ": " << r.err;
+    EXPECT_NE(r.out.find("to do"), std::string::npos) << entry.path() << ": " << r.out;
+    EXPECT_NE(r.out.find("\nruns "), std::string::npos) << entry.path() << ": " << r.out;
+    EXPECT_FALSE(fs::exists(dir_ / "out")) << entry.path() << ": --plan made the output directory";
+  }
+  EXPECT_GE(files, 10);
+}

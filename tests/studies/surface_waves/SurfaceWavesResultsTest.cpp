@@ -77,4 +77,30 @@ TEST_F(SurfaceWavesResults, EveryVariantHasAnOnsetOrABound) {
   }
 }
 
+TEST_F(SurfaceWavesResults, ContinuumPointHasASpectrumBesideTheParticlesAndACostForEach) {
+  // The wet layer's 2D continuum in the periodic 30 d box: 20 cycles leave one window of 10 in
+  // the second half at least; a standing mode of a periodic box of width W has lambda = W / m.
+  const std::string g = kRoot + "/continuum/point_000";
+  EXPECT_EQ(study().value(g, "variant"), 1.0);
+  EXPECT_EQ(study().value(g, "width_d"), 30.0);
+  EXPECT_EQ(study().value(g, "gamma"), 4.0);
+  for (const std::string model : {"continuum_", "particles_"}) {
+    EXPECT_EQ(study().value(g, model + "runs_ok"), 1.0) << model;
+    EXPECT_GE(study().value(g, model + "windows"), 1.0) << model;
+    const double share = study().value(g, model + "wave_fraction");
+    EXPECT_GE(share, 0.0) << model;
+    EXPECT_LE(share, 1.0) << model;
+    const double m = study().value(g, model + "standing_mode");
+    EXPECT_GE(m, 1.0) << model;
+    EXPECT_GE(30 / m, 4.0) << model;
+    EXPECT_GT(study().value(g, model + "cpu_per_cycle"), 0.0) << model;
+  }
+  // The onsets of the two models over the continuum's Gamma, continuum first.
+  for (int i = 0; i < 2; ++i) {
+    const std::string o = kRoot + "/continuum_onsets/onset_00" + std::to_string(i);
+    EXPECT_EQ(study().file().readStringAttribute(o, "model"), i == 0 ? "continuum" : "particles");
+    EXPECT_EQ(study().value(o, "width_d"), 30.0);
+  }
+}
+
 }  // namespace
