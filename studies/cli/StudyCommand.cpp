@@ -41,7 +41,7 @@ int runStudy(const StudyOptions& opt, const MpiSession& mpi) {
   const int file_jobs = file.integer("study", "jobs", 0);
   if (file_jobs < 0) file.fail("study", "jobs", "expected 0 (one per core) or more runs at a time");
   file.rejectUnknownKeys();
-  if (opt.plan) return printStudyPlan(opt, *study);
+  if (opt.plan) return mpi.rank() == 0 ? printStudyPlan(opt, *study) : 0;
   return runStudyPlan(opt, file, *study, file_jobs, mpi, kVersion);
 }
 

@@ -43,6 +43,8 @@ class StudyFile {
   // scenes from a study file copied anywhere). StudyError listing both places if neither has it.
   std::string scenePath(std::string_view section, std::string_view key, std::string fallback);
 
+  // True if the file has the section (whatever it holds).
+  bool hasSection(std::string_view section) const { return table_[section].is_table(); }
   // Throws StudyError naming the first key or section that no read asked for.
   void rejectUnknownKeys() const;
   // "STUDY.toml: [section] key = value: what"

@@ -1,5 +1,7 @@
 #include "studies/run_files/HydroRunFile.hpp"
 
+#include <stdexcept>
+
 #include "coarse_grain/FieldsFile.hpp"
 #include "coarse_grain/FieldsLayout.hpp"
 #include "coarse_grain/FieldsReader.hpp"
@@ -110,6 +112,11 @@ void writeHydroRunFile(const std::string& path, const HydroRunContent& c) {
 
 HydroRunContent readHydroRunFile(const std::string& path) {
   const h5::File f = h5::File::openReadOnly(path);
+  // A 2D run file (Hydro2DRunFile.hpp) has another layout: named, not read as garbage.
+  if (f.hasAttribute("/", "format") && f.readStringAttribute("/", "format") != kHydroRunFormat)
+    throw std::runtime_error(path + ": not a 1D hydro run file (format " +
+                             f.readStringAttribute("/", "format") + ", expected " +
+                             kHydroRunFormat + ")");
   HydroRunContent c;
   readSolver(f, c);
   c.lab = readPhaseProfiles(f, "");

@@ -33,13 +33,16 @@ RunCache::RunCache(std::string directory, std::string build_id, ReadableCheck re
     : directory_(std::move(directory)),
       build_id_(std::move(build_id)),
       readable_(std::move(readable)) {
-  if (!directory_.empty()) std::filesystem::create_directories(directory_);
+  std::filesystem::create_directories(directory_);
 }
 
-RunCache RunCache::lookOnly(std::string directory, std::string build_id) {
-  RunCache c(std::string(), std::move(build_id));  // "" makes no directory
-  c.directory_ = std::move(directory);
-  return c;
+RunCache::RunCache(LookOnly, std::string directory, std::string build_id, ReadableCheck readable)
+    : directory_(std::move(directory)),
+      build_id_(std::move(build_id)),
+      readable_(std::move(readable)) {}
+
+RunCache RunCache::lookOnly(std::string directory, std::string build_id, ReadableCheck readable) {
+  return RunCache(LookOnly{}, std::move(directory), std::move(build_id), std::move(readable));
 }
 
 // Outputs are renamed into place complete and the record follows them, so an output that

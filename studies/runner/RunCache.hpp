@@ -23,7 +23,8 @@ class RunCache {
   RunCache(std::string directory, std::string build_id, ReadableCheck readable = {});
 
   // A cache only looked into (granwave study --plan): the directory is not made.
-  static RunCache lookOnly(std::string directory, std::string build_id);
+  static RunCache lookOnly(std::string directory, std::string build_id,
+                           ReadableCheck readable = {});
 
   const std::string& directory() const { return directory_; }
   // The record with its stem filled in (and ok/cpu/... if it is done). A particle run's scene
@@ -34,6 +35,8 @@ class RunCache {
   void store(const RunRecord& record) const;
 
  private:
+  struct LookOnly {};
+  RunCache(LookOnly, std::string directory, std::string build_id, ReadableCheck readable);
   bool usable(const std::string& path) const;
 
   std::string directory_, build_id_;

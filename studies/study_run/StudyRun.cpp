@@ -109,6 +109,16 @@ int jobsOf(const StudyRunOptions& opt, int file_jobs, const MpiSession& mpi) {
   return jobs;
 }
 
+// An output counts as made if HDF5 opens it (RunCache.hpp: else the run is made again).
+bool readableOutput(const std::string& path) {
+  try {
+    h5::File::openReadOnly(path);
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
 }  // namespace
 
 int printStudyPlan(const StudyRunOptions& opt, const Study& study) {
@@ -116,19 +126,24 @@ int printStudyPlan(const StudyRunOptions& opt, const Study& study) {
   if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
   const std::string cache_dir =
       opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
-  const RunCache cache = RunCache::lookOnly(cache_dir, buildIdentity());
+  const RunCache cache = RunCache::lookOnly(cache_dir, buildIdentity(), readableOutput);
   std::set<std::string> distinct, held;
   int particles = 0, hydro = 0, lammps = 0;
   for (const RunRequest& q : study.plan()) {
     RunRecord r = cache.record(q);
     if (!distinct.insert(r.stem).second) continue;  // the same run under a second label
-    const bool cached = cache.load(r) && r.ok;
+    // A failed run's record is reused as a study reuses it (its failure is reported).
+    const bool cached = cache.load(r);
     if (cached) held.insert(r.stem);
     const char* kind = q.kind == RunKind::Particles ? "particles"
                        : q.kind == RunKind::Hydro   ? "hydro"
                                                     : "lammps";
     (q.kind == RunKind::Particles ? particles : q.kind == RunKind::Hydro ? hydro : lammps)++;
-    fmt::print("{:<9}  {:<8}  {}\n", kind, cached ? "cached" : "to do", q.label);
+    fmt::print("{:<9}  {:<15}  {}\n", kind,
+               !cached ? "to do"
+               : r.ok  ? "cached"
+                       : "cached (failed)",
+               q.label);
   }
   fmt::print("study           {} ({})\n", opt.study_path, study.title());
   fmt::print("runs            {} ({} particles, {} hydro, {} LAMMPS); {} held by {}, {} to do\n",
@@ -156,14 +171,7 @@ int runStudyPlan(const StudyRunOptions& opt, const StudyFile& file, const Study&
   files::requireDistinct({{"study file", opt.study_path}},
                          {{"results file", results}, {"report", html}});
   const std::string build_id = buildIdentity();
-  const RunCache cache(cache_dir, build_id, [](const std::string& path) {
-    try {
-      h5::File::openReadOnly(path);
-      return true;
-    } catch (const std::exception&) {
-      return false;
-    }
-  });
+  const RunCache cache(cache_dir, build_id, readableOutput);
   if (mpi.rank() > 0) {
     workerLoop(mpi, planRecords(plan, cache),
                [&opt](const RunRecord& r) { return childArguments(r, opt.checkpoint_every); });

@@ -52,19 +52,26 @@ std::vector<ContinuumWavePair> continuumBesideParticles(
     pair.continuum = m;
     for (const SurfaceWaveSummary& s : particles)
       if (sameDrive(s.point, m.point)) pair.particles = s;
-    std::vector<std::string> model_labels, particle_labels;
+    std::vector<std::string> particle_labels;
+    double model_cpu = 0, model_cycles = 0;
     for (const SurfaceWaveRun& r : continuum_runs) {
       if (!sameDrive(r.point, m.point)) continue;
-      model_labels.push_back(r.label);
       if (!r.ok && pair.failure.empty()) pair.failure = r.failure;
-      if (r.ok) pair.remaps += readHydro2DSolver(runs.get(r.label).hydroPath()).remaps;
+      if (!r.ok) continue;
+      // The cycles the solver integrated (the duration is written to 6 digits, so a run of
+      // 80 cycles at 15 Hz may integrate 79).
+      const RunRecord& rec = runs.get(r.label);
+      const Hydro2DSolverRecord solver = readHydro2DSolver(rec.hydroPath());
+      pair.remaps += solver.remaps;
+      model_cpu += rec.cpu;
+      model_cycles += static_cast<double>(solver.cycles);
     }
     for (int seed : c.seeds) {
       SurfaceWavePoint q = m.point;
       q.seed = seed;
       particle_labels.push_back(c.label(q));
     }
-    pair.continuum_cpu_per_cycle = cpuPerCycle(runs, model_labels, k.cycles);
+    pair.continuum_cpu_per_cycle = model_cycles > 0 ? model_cpu / model_cycles : NAN;
     pair.particles_cpu_per_cycle = cpuPerCycle(runs, particle_labels, c.cycles);
     if (m.waves() && pair.particles.waves())
       pair.wavelength_ratio = ratio(m.wavelength_d, pair.particles.wavelength_d);

@@ -26,7 +26,8 @@ std::string waveText(const SurfaceWaveSummary& s) {
 }
 
 std::string onsetCell(const SurfaceWaveOnset& o) {
-  return o.gamma_c.valid() ? format(o.gamma_c) : "Gamma_c " + o.bound;
+  if (o.gamma_c.valid()) return format(o.gamma_c);
+  return o.bound == "no runs" ? "– (no run finished)" : "Gamma_c " + o.bound;
 }
 
 Table pointsTable(const SurfaceWavesConfig& c, const SurfaceWavesResults& r) {
@@ -103,11 +104,12 @@ void addContinuum(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, Rep
           "The 2D granular hydrodynamics of docs/hydro.md (\"The 2D model\"): the same "
           "closures and restitution laws as the particles' scene, nothing fitted to the "
           "particles, in the same periodic box at f = {} Hz, {} of {} cells each, {} "
-          "cycles from the settled layer with seeded column masses (seeds {}). Its surface is "
-          "measured by the particles' rule (studies/hydro_run/ContinuumSurface.hpp) and its "
-          "spectrum taken over the run's second half in windows of 10 cycles, the wave criterion "
-          "the particles'. The particles' columns are those of the onset scan at the same "
-          "point. Cost: each model's CPU seconds (user + sys of its runs) per drive cycle.",
+          "cycles from the scene's start (hydro.start) with seeded column masses (seeds {}). Its "
+          "surface is measured by the particles' rule (studies/hydro_run/ContinuumSurface.hpp) "
+          "and its spectrum taken over the run's second half in windows of 10 cycles, with the "
+          "particles' wave criterion. The particles at each point are the runs of the scans "
+          "above where the point is one of theirs, else runs of their own. Cost: each model's "
+          "CPU seconds (user + sys of its runs) per drive cycle it integrated.",
           formatCompact(k.frequency),
           k.columns > 0 ? fmt::format("{} columns", k.columns) : "one column per 4 d of the width",
           k.cells, k.cycles, seeds));

@@ -170,8 +170,8 @@ void reportSurfaceWaves(const SurfaceWavesConfig& c, const SurfaceWavesResults& 
       "with e_eff over the {} variants with an onset: {}.\n"
       "- Deficiency factor r_x = RMS(v_x)_dry / RMS(v_x)_wet (mean ± standard error over "
       "points): {} with waves in either layer, {} without (the noise floor).\n",
-      r.runs.size(), r.failed_runs, r.cpu_seconds, r.width_verdict, r.ranked_variants, rho,
-      format(r.r_x_waves), format(r.r_x_control));
+      r.runs.size() + c.continuumPoints().size(), r.failed_runs, r.cpu_seconds, r.width_verdict,
+      r.ranked_variants, rho, format(r.r_x_waves), format(r.r_x_control));
   report.section("Method", method(c));
   addOnset(c, r, report);
   ReportSection& spectra = report.section(

@@ -60,6 +60,8 @@ void writeContinuum(h5::File& f, const SurfaceWavesResults& r) {
     putValue(f, g, "rows", p.continuum.point.rows);
     putValue(f, g, "frequency", p.continuum.point.frequency);
     putValue(f, g, "gamma", p.continuum.point.gamma);
+    putValue(f, g, "continuum_seeds", p.continuum.seeds);
+    putValue(f, g, "particles_seeds", p.particles.seeds);
     putSpectrum(f, g, "continuum_", p.continuum);
     putSpectrum(f, g, "particles_", p.particles);
     putValue(f, g, "continuum_cpu_per_cycle", p.continuum_cpu_per_cycle);

@@ -67,6 +67,13 @@ void requirePositive(StudyFile& f, const char* section, const char* key,
     if (!(x > 0)) f.fail(section, key, "expected positive values");
 }
 
+// The onset is bracketed between neighbouring Gamma of the list (SurfaceWaveOnset.hpp).
+void requireAscending(StudyFile& f, const char* section, const char* key,
+                      const std::vector<double>& v) {
+  for (std::size_t i = 1; i < v.size(); ++i)
+    if (!(v[i] > v[i - 1])) f.fail(section, key, "expected increasing values");
+}
+
 void readScans(StudyFile& f, SurfaceWavesConfig& c) {
   c.width_d = f.number("grid", "width", c.width_d);
   c.periodic = f.boolean("grid", "periodic", c.periodic);
@@ -85,6 +92,7 @@ void readScans(StudyFile& f, SurfaceWavesConfig& c) {
   c.dissipation_gamma = f.number("dissipation", "gamma", c.dissipation_gamma);
   requirePositive(f, "grid", "frequencies", c.frequencies);
   requirePositive(f, "grid", "gammas", c.gammas);
+  requireAscending(f, "grid", "gammas", c.gammas);
   requirePositive(f, "widths", "widths", c.widths_d);
   requirePositive(f, "depths", "frequencies", c.depth_frequencies);
   for (double w : c.widths_d)
@@ -108,16 +116,26 @@ void readContinuum(StudyFile& f, SurfaceWavesConfig& c) {
   k.columns = f.integer("continuum", "columns", k.columns);
   k.cells = f.integer("continuum", "cells", k.cells);
   k.seeds = f.integers("continuum", "seeds", k.seeds);
-  if (k.variants.empty()) return;
+  if (k.variants.empty()) {
+    if (f.hasSection("continuum"))
+      f.fail("continuum", "variants",
+             "expected at least one variant of [variants] (leave out [continuum] for no "
+             "continuum runs)");
+    return;
+  }
   requirePositive(f, "continuum", "widths", k.widths_d);
+  requireAscending(f, "continuum", "gammas", k.gammas);
   requirePositive(f, "continuum", "gammas", k.gammas);
   if (!(k.frequency > 0)) f.fail("continuum", "frequency", "expected a positive frequency");
   for (double w : k.widths_d)
     if (std::abs(w - std::round(w)) > 1e-9) f.fail("continuum", "widths", "widths are whole d");
-  // The spectrum is taken over the run's second half in windows of 10 cycles.
-  if (k.cycles < 20)
+  // The spectrum is taken over the run's second half in windows of 10 cycles, two of them
+  // from 40 cycles on (a shorter run's windows are shorter: surfaceWindowCycles), as the
+  // particles' are.
+  if (k.cycles < 40)
     f.fail("continuum", "cycles",
-           "expected at least 20 cycles (a window of 10 in the second half)");
+           "expected at least 40 cycles (windows of 10 cycles in the second half, as the "
+           "particles')");
   if (k.columns < 0) f.fail("continuum", "columns", "expected 0 (one per 4 d) or more columns");
   if (k.cells < 4) f.fail("continuum", "cells", "expected at least 4 cells per column");
   if (k.seeds.empty() || std::set<int>(k.seeds.begin(), k.seeds.end()).size() != k.seeds.size())

@@ -53,7 +53,7 @@ bool contains(const std::string& text, const std::string& part) {
 TEST_F(SurfaceWavesStudyPlan, ContinuumPointsPlanA2DHydroRunBesideTheParticlesAtTheSameDrive) {
   granwave::StudyFile f = file(
       "[continuum]\nvariants = [\"wet\"]\nwidths = [60.0]\ngammas = [3.0, 4.0]\n"
-      "seeds = [1, 2, 3]\ncycles = 30\ncells = 24\ncolumns = 10\n");
+      "seeds = [1, 2, 3]\ncycles = 50\ncells = 24\ncolumns = 10\n");
   const granwave::SurfaceWavesStudy study(f);
   int hydro = 0, particles_at_60 = 0;
   for (const granwave::RunRequest& q : study.plan()) {
@@ -65,7 +65,7 @@ TEST_F(SurfaceWavesStudyPlan, ContinuumPointsPlanA2DHydroRunBesideTheParticlesAt
       EXPECT_EQ(q.scene.hydro.cells, 24) << q.label;
       EXPECT_TRUE(q.scene.container.periodic_x) << q.label;
       EXPECT_NEAR(width_d, 60.0, 1e-9) << q.label;
-      EXPECT_NEAR(q.scene.run.duration * q.scene.drive.frequency, 30.0, 1e-9) << q.label;
+      EXPECT_NEAR(q.scene.run.duration * q.scene.drive.frequency, 50.0, 1e-9) << q.label;
     } else if (std::abs(width_d - 60.0) < 1e-9) {
       ++particles_at_60;  // the particles at the continuum's points, one per particle seed
       EXPECT_TRUE(q.scene.container.periodic_x) << q.label;
@@ -86,7 +86,8 @@ TEST_F(SurfaceWavesStudyPlan, WithoutContinuumVariantsNoHydroRunIsPlanned) {
 TEST_F(SurfaceWavesStudyPlan, ContinuumKeysOutOfRangeAreRefusedNamingTheKey) {
   const std::string wet = "[continuum]\nvariants = [\"wet\"]\n";
   for (const auto& [extra, key] :
-       std::vector<std::pair<std::string, std::string>>{{"cycles = 10\n", "cycles"},
+       std::vector<std::pair<std::string, std::string>>{{"cycles = 30\n", "cycles"},
+                                                        {"gammas = [4.0, 3.0]\n", "gammas"},
                                                         {"cells = 2\n", "cells"},
                                                         {"columns = -1\n", "columns"},
                                                         {"gammas = [0.0]\n", "gammas"},
@@ -100,4 +101,8 @@ TEST_F(SurfaceWavesStudyPlan, ContinuumKeysOutOfRangeAreRefusedNamingTheKey) {
   const std::string message = studyError([&] { granwave::SurfaceWavesStudy study(f); });
   EXPECT_TRUE(contains(message, "[continuum] variants")) << message;
   EXPECT_TRUE(contains(message, "moist")) << message;
+  // A [continuum] section without variants would silently run no continuum.
+  granwave::StudyFile g = file("[continuum]\ngammas = [3.0]\n");
+  const std::string none = studyError([&] { granwave::SurfaceWavesStudy study(g); });
+  EXPECT_TRUE(contains(none, "[continuum] variants")) << none;
 }
