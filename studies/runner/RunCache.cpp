@@ -64,9 +64,7 @@ RunRecord RunCache::record(const RunRequest& given) const {
   if (request.kind == RunKind::Particles)
     request.scene.run.trajectory_stride =
         static_cast<int>(std::max<std::uint64_t>(lastRecordStep(request.scene), 1));
-  const char* kind = request.kind == RunKind::Particles ? "particles"
-                     : request.kind == RunKind::Hydro   ? "hydro"
-                                                        : "lammps";
+  const char* kind = runKindName(request.kind);
   std::string key = std::string(kind) + "\n" + sceneToToml(request.scene);
   if (request.kind == RunKind::Lammps) {
     key += request.program + "\n" + request.deck_text;

@@ -12,6 +12,11 @@ namespace granwave {
 // program and arguments below; its output is <stem>.com.txt.
 enum class RunKind { Particles, Hydro, Lammps };
 
+// "particles", "hydro" or "lammps": the kind's name in the run cache's file names and keys.
+inline const char* runKindName(RunKind kind) {
+  return kind == RunKind::Particles ? "particles" : kind == RunKind::Hydro ? "hydro" : "lammps";
+}
+
 struct RunRequest {
   RunKind kind = RunKind::Particles;
   std::string label;  // unique within a study: progress lines, tables, lookup

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <set>
 #include <thread>
+#include <utility>
 
 #include "files/OutputPath.hpp"
 #include "h5/AtomicFile.hpp"
@@ -109,6 +110,15 @@ int jobsOf(const StudyRunOptions& opt, int file_jobs, const MpiSession& mpi) {
   return jobs;
 }
 
+// -o (default: the study file's stem in the working directory) and --cache (default OUTDIR/runs).
+std::pair<std::string, std::string> outputAndCacheDirectories(const StudyRunOptions& opt) {
+  std::string outdir = opt.output;
+  if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
+  std::string cache_dir =
+      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  return {outdir, cache_dir};
+}
+
 // An output counts as made if HDF5 opens it (RunCache.hpp: else the run is made again).
 bool readableOutput(const std::string& path) {
   try {
@@ -122,10 +132,7 @@ bool readableOutput(const std::string& path) {
 }  // namespace
 
 int printStudyPlan(const StudyRunOptions& opt, const Study& study) {
-  std::string outdir = opt.output;
-  if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
-  const std::string cache_dir =
-      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  const std::string cache_dir = outputAndCacheDirectories(opt).second;
   const RunCache cache = RunCache::lookOnly(cache_dir, buildIdentity(), readableOutput);
   std::set<std::string> distinct, held;
   int particles = 0, hydro = 0, lammps = 0;
@@ -135,11 +142,8 @@ int printStudyPlan(const StudyRunOptions& opt, const Study& study) {
     // A failed run's record is reused as a study reuses it (its failure is reported).
     const bool cached = cache.load(r);
     if (cached) held.insert(r.stem);
-    const char* kind = q.kind == RunKind::Particles ? "particles"
-                       : q.kind == RunKind::Hydro   ? "hydro"
-                                                    : "lammps";
     (q.kind == RunKind::Particles ? particles : q.kind == RunKind::Hydro ? hydro : lammps)++;
-    fmt::print("{:<9}  {:<15}  {}\n", kind,
+    fmt::print("{:<9}  {:<15}  {}\n", runKindName(q.kind),
                !cached ? "to do"
                : r.ok  ? "cached"
                        : "cached (failed)",
@@ -158,10 +162,7 @@ int runStudyPlan(const StudyRunOptions& opt, const StudyFile& file, const Study&
   const int jobs = jobsOf(opt, file_jobs, mpi);
   std::vector<RunRequest> plan = study.plan();
 
-  std::string outdir = opt.output;
-  if (outdir.empty()) outdir = std::filesystem::path(opt.study_path).stem().string();
-  const std::string cache_dir =
-      opt.cache.empty() ? (std::filesystem::path(outdir) / "runs").string() : opt.cache;
+  const auto [outdir, cache_dir] = outputAndCacheDirectories(opt);
   // Both checked before either is made: a refused --cache leaves no empty output directory.
   files::requireOutputDirectory(outdir, "-o");
   if (!opt.cache.empty()) files::requireOutputDirectory(cache_dir, "--cache");

@@ -8,6 +8,7 @@
 
 #include "studies/contract/StudyFile.hpp"
 #include "tests/h5/ScratchDir.hpp"
+#include "tests/studies/contract/StudyErrorMessage.hpp"
 
 namespace fs = std::filesystem;
 
@@ -25,21 +26,8 @@ class StudyFileTest : public ::testing::Test {
   const fs::path& dir_ = scratch_.path();
 };
 
-// The message of the StudyError `f` throws (fails the test if it throws nothing).
-template <typename F>
-std::string studyError(F&& f) {
-  try {
-    f();
-  } catch (const granwave::StudyError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no StudyError thrown";
-  return "";
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using granwave::testing::contains;
+using granwave::testing::studyError;
 
 const char* kTyped = R"([study]
 kind = "test-kind"

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -13,6 +12,7 @@
 #include "studies/contract/StudyFile.hpp"
 #include "studies/surface_waves/SurfaceWavesStudy.hpp"
 #include "tests/h5/ScratchDir.hpp"
+#include "tests/studies/contract/StudyErrorMessage.hpp"
 
 namespace {
 
@@ -34,19 +34,8 @@ class SurfaceWavesStudyPlan : public ::testing::Test {
   granwave::testing::ScratchDir scratch_;
 };
 
-std::string studyError(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const granwave::StudyError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "no StudyError thrown";
-  return "";
-}
-
-bool contains(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
+using granwave::testing::contains;
+using granwave::testing::studyError;
 
 }  // namespace
 
