@@ -249,6 +249,16 @@ SurfaceWaveAnalysis analyseSurfaceWaves(const SurfaceSeries& s, const SurfaceSpe
   return a;
 }
 
+int SurfaceWaveAnalysis::waveWindows() const {
+  return static_cast<int>(
+      std::count_if(windows.begin(), windows.end(), [](const SurfaceWindow& w) { return w.wave; }));
+}
+
+bool pooledWindowsWave(int wave_windows, int windows, double mean_amplitude_d,
+                       const SurfaceSpectrumOptions& o) {
+  return windows > 0 && 2 * wave_windows >= windows && mean_amplitude_d >= o.amplitude_threshold;
+}
+
 int surfaceWindowCycles(int cycles, const SurfaceSpectrumOptions& o) {
   if (cycles >= 2 * o.window_cycles) return o.window_cycles;
   return std::max(4, cycles / 4 * 2);

@@ -77,6 +77,7 @@ struct SurfaceWaveAnalysis {
   double subharmonic_share = 0, subharmonic_share_error = 0;
   double wave_fraction = 0;  // windows with a wave
   int standing_mode = 0;     // the most frequent m_sub
+  int waveWindows() const;   // windows with a wave, counted
   double mean_bulk_area_fraction = 0;
   // Spectra averaged over windows: per mode m = 0 .. modes - 1 (m = 0 unused), its wavenumber
   // and P_sub, P_harm, the broadband <|r|^2> (m^2); and the temporal power spectrum of the
@@ -87,6 +88,14 @@ struct SurfaceWaveAnalysis {
   std::vector<double> recent_height;
   int recent_records = 0;
 };
+
+// Whether windows pooled over runs (seeds) hold a wave: at least half of them hold an f/2 wave,
+// counted in whole windows (a sum of per-run fractions makes 6 of 12 fall below one half), and
+// their mean amplitude passes the per-window threshold as well: a pattern that passes it in half
+// the windows and lies far below it in the rest (whole-box tilts of 0.2 d mean amplitude at mode
+// 1 in the wet layer at 25 Hz, docs/physics.md) is not a standing wave of the layer.
+bool pooledWindowsWave(int wave_windows, int windows, double mean_amplitude_d,
+                       const SurfaceSpectrumOptions& options = {});
 
 // Throws std::invalid_argument for an odd or non-positive window.
 SurfaceWaveAnalysis analyseSurfaceWaves(const SurfaceSeries& series,

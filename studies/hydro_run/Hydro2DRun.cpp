@@ -89,13 +89,6 @@ std::unique_ptr<hydro::GranularHydro2D> hydro2DOperator(const Scene& scene,
 Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_name,
                                   std::FILE* progress) {
   requireHydroScene(scene, scene_name);
-  // Between side walls the 2D operator fails at a free-surface node within ten cycles on the
-  // paper's scene (20 and 100 cells, with and without the perturbation; docs/hydro.md, "The 2D
-  // model"): refused rather than run into that failure.
-  if (!scene.container.periodic_x)
-    throw SceneError(scene_name +
-                     ": hydro.dimensions = 2 needs container.periodic_x = true (the 2D continuum "
-                     "between side walls is not done)");
   const SceneDerived dv = derive(scene);
   const std::unique_ptr<hydro::GranularHydro2D> op = hydro2DOperator(scene, dv);
   const hydro::Hydro2DRunOptions o = hydro2DRunOptions(scene, dv);

@@ -8,7 +8,7 @@ namespace granwave {
 
 SpectrumWave spectrumWave(const std::vector<const RunRecord*>& records) {
   SpectrumWave s;
-  double waves = 0;
+  int waves = 0;
   for (const RunRecord* r : records) {
     if (!r->ok) continue;
     const SurfaceWaveAnalysis a = readSurfaceWaves(r->fieldsPath());
@@ -16,12 +16,12 @@ SpectrumWave spectrumWave(const std::vector<const RunRecord*>& records) {
     ++s.runs;
     const int n = static_cast<int>(a.windows.size());
     s.windows += n;
-    waves += a.wave_fraction * n;
+    waves += a.waveWindows();
     s.amplitude_d += a.amplitude_d;
     s.wavelength_d += a.wavelength_d;
   }
   if (s.runs == 0) return s;
-  s.wave_fraction = s.windows > 0 ? waves / s.windows : 0;
+  s.wave_fraction = s.windows > 0 ? static_cast<double>(waves) / s.windows : 0;
   s.amplitude_d /= s.runs;
   s.wavelength_d /= s.runs;
   return s;

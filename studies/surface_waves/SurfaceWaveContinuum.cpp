@@ -90,10 +90,12 @@ std::vector<SurfaceWaveOnset> continuumOnsets(const SurfaceWavesConfig& c,
   }
   std::vector<SurfaceWaveOnset> out;
   for (int v : k.variants)
-    for (double w : k.widths_d) {
-      out.push_back(waveOnset(k.gammas, v, k.frequency, w, model));
-      out.push_back(waveOnset(k.gammas, v, k.frequency, w, particles));
-    }
+    for (const std::string& b : k.boundaries)
+      for (double w : k.widths_d) {
+        const bool periodic = b == "periodic";
+        out.push_back(waveOnset(k.gammas, v, k.frequency, w, periodic, model));
+        out.push_back(waveOnset(k.gammas, v, k.frequency, w, periodic, particles));
+      }
   return out;
 }
 

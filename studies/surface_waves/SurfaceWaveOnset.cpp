@@ -17,30 +17,37 @@ double shareError(double w, int n) {
 }  // namespace
 
 SurfaceWaveOnset waveOnset(const std::vector<double>& gammas, int variant, double f, double width_d,
-                           const std::vector<SurfaceWaveSummary>& points) {
+                           bool periodic, const std::vector<SurfaceWaveSummary>& points) {
   SurfaceWaveOnset o;
   o.variant = variant;
   o.frequency = f;
   o.width_d = width_d;
+  o.periodic = periodic;
   std::vector<const SurfaceWaveSummary*> curve;
   for (double g : gammas)
     for (const SurfaceWaveSummary& s : points)
       if (s.point.variant == variant && s.point.frequency == f && s.point.width_d == width_d &&
-          s.point.gamma == g && s.ok > 0)
+          s.point.periodic == periodic && s.point.gamma == g && s.ok > 0)
         curve.push_back(&s);
   if (curve.empty()) {
     o.bound = "no runs";
     return o;
   }
-  if (curve.front()->wave_fraction >= 0.5) {
+  if (curve.front()->waves()) {
     o.bound = "< " + formatCompact(curve.front()->point.gamma);
     return o;
   }
   for (std::size_t i = 1; i < curve.size(); ++i) {
     const SurfaceWaveSummary &a = *curve[i - 1], &b = *curve[i];
-    if (b.wave_fraction < 0.5) continue;
+    if (!b.waves()) continue;
     const double ga = a.point.gamma, gb = b.point.gamma;
     const double wa = a.wave_fraction, wb = b.wave_fraction;
+    if (wa >= wb || wa >= 0.5) {
+      // a's windows pass the share but its mean amplitude does not: the share cannot place the
+      // crossing, which lies anywhere between the two (uniform: the interval's sd).
+      o.gamma_c = {0.5 * (ga + gb), (gb - ga) / std::sqrt(12.0)};
+      return o;
+    }
     const double t = (0.5 - wa) / (wb - wa);
     const double g = ga + t * (gb - ga);
     // d g / d wa = (gb - ga) (t - 1) / (wb - wa), d g / d wb = -(gb - ga) t / (wb - wa).
@@ -78,7 +85,7 @@ std::vector<SurfaceWaveOnset> waveOnsets(const SurfaceWavesConfig& c,
   std::vector<SurfaceWaveOnset> out;
   for (std::size_t v = 0; v < c.variants.size(); ++v)
     for (double f : c.frequencies)
-      out.push_back(waveOnset(c.gammas, static_cast<int>(v), f, c.width_d, points));
+      out.push_back(waveOnset(c.gammas, static_cast<int>(v), f, c.width_d, c.periodic, points));
   return out;
 }
 

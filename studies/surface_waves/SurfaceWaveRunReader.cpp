@@ -58,6 +58,7 @@ void readSpectrum(const SurfaceWaveAnalysis& s, SurfaceWaveRun& r) {
   r.noise_d = s.noise_d;
   r.wave_fraction = s.wave_fraction;
   r.windows = static_cast<int>(s.windows.size());
+  r.wave_windows = s.waveWindows();
   r.standing_mode = s.standing_mode;
 }
 

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "coarse_grain/FieldsReader.hpp"
+#include "coarse_grain/SurfaceWaveSpectrum.hpp"
 #include "coarse_grain/SurfaceWavesFile.hpp"
 #include "studies/surface_waves/SurfaceWaveContinuum.hpp"
 #include "studies/surface_waves/SurfaceWaveOnset.hpp"
@@ -14,6 +15,10 @@
 #include "studies/wave_analysis/WaveMomentumRatio.hpp"
 
 namespace granwave {
+
+bool SurfaceWaveSummary::waves() const {
+  return pooledWindowsWave(wave_windows, windows, amplitude_d.value);
+}
 
 namespace {
 
@@ -35,7 +40,6 @@ SurfaceWaveSummary summary(const std::vector<const SurfaceWaveRun*>& runs) {
   std::vector<Measurement> amp, lambda, share;
   std::vector<double> rms, eff, loss;
   std::map<int, int> modes;
-  double waves = 0;
   for (const SurfaceWaveRun* r : runs) {
     if (!r->ok || !r->spectrum) continue;
     ++s.ok;
@@ -45,13 +49,13 @@ SurfaceWaveSummary summary(const std::vector<const SurfaceWaveRun*>& runs) {
     rms.push_back(r->rms_vx);
     eff.push_back(r->e_eff);
     loss.push_back(r->loss_per_cycle);
-    waves += r->wave_fraction * r->windows;
+    s.wave_windows += r->wave_windows;
     s.windows += r->windows;
     s.detector_votes += r->detector_wave;
     ++modes[r->standing_mode];
   }
   if (s.ok == 0) return s;
-  s.wave_fraction = s.windows > 0 ? waves / s.windows : 0;
+  s.wave_fraction = s.windows > 0 ? static_cast<double>(s.wave_windows) / s.windows : 0;
   s.amplitude_d = combine(amp);
   s.wavelength_d = combine(lambda);
   s.share = combine(share);
@@ -88,8 +92,8 @@ std::vector<MomentumRatioPoint> momentumRatios(const SurfaceWavesConfig& c, cons
       p.r_x = seedMean(per_seed);
       for (const SurfaceWaveSummary& s : onset) {
         if (s.point.frequency != f || s.point.gamma != g) continue;
-        if (s.point.variant == dry) p.dry_wave_fraction = s.wave_fraction;
-        if (s.point.variant == wet) p.wet_wave_fraction = s.wave_fraction;
+        if (s.point.variant == dry) p.dry_wave_fraction = s.wave_fraction, p.dry_waves = s.waves();
+        if (s.point.variant == wet) p.wet_wave_fraction = s.wave_fraction, p.wet_waves = s.waves();
       }
       out.push_back(p);
     }

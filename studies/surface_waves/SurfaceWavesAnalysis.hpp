@@ -22,7 +22,7 @@ struct SurfaceWaveRun {
   // The spectrum (windows of 10 cycles): standing f/2 wave and temporal response.
   Measurement amplitude_d, wavelength_d, share;
   double noise_d = 0, wave_fraction = 0;
-  int windows = 0, standing_mode = 0;
+  int windows = 0, wave_windows = 0, standing_mode = 0;
   // The stability study's detector (one phase, 16 cycles).
   bool detector_wave = false;
   int detector_mode = 0, period = 0;
@@ -36,15 +36,18 @@ struct SurfaceWaveRun {
 // One point over its seeds.
 struct SurfaceWaveSummary {
   SurfaceWavePoint point;  // seed unused
-  int seeds = 0, ok = 0, windows = 0, detector_votes = 0, standing_mode = 0;
-  double wave_fraction = 0;  // windows with a wave, pooled over seeds
+  int seeds = 0, ok = 0, windows = 0, wave_windows = 0, detector_votes = 0, standing_mode = 0;
+  double wave_fraction = 0;  // wave_windows / windows, pooled over seeds
   Measurement amplitude_d, wavelength_d, share, rms_vx, e_eff, loss_per_cycle;
-  bool waves() const { return wave_fraction >= 0.5; }
+  // Half the pooled windows or more hold a wave and the mean amplitude passes the threshold
+  // (coarse_grain/SurfaceWaveSpectrum.hpp, pooledWindowsWave).
+  bool waves() const;
 };
 
 struct SurfaceWaveOnset {
   int variant = 0;
   double frequency = 0, width_d = 0;
+  bool periodic = true;
   Measurement gamma_c;  // invalid when no crossing; then `bound` says where it lies
   std::string bound;
 };
@@ -53,7 +56,8 @@ struct MomentumRatioPoint {
   double frequency = 0, gamma = 0;
   Measurement r_x;
   double dry_wave_fraction = 0, wet_wave_fraction = 0;
-  bool control() const { return dry_wave_fraction < 0.5 && wet_wave_fraction < 0.5; }
+  bool dry_waves = false, wet_waves = false;  // SurfaceWaveSummary::waves of each
+  bool control() const { return !dry_waves && !wet_waves; }
 };
 
 struct VariantDissipation {

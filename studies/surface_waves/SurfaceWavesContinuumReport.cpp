@@ -58,13 +58,35 @@ Table onsetTable(const SurfaceWavesConfig& c, const SurfaceWavesResults& r) {
   t.columns = {"variant", "W (d)", "continuum Gamma_c", "particles Gamma_c"};
   for (std::size_t i = 0; i + 1 < r.continuum_onsets.size(); i += 2) {
     const SurfaceWaveOnset &m = r.continuum_onsets[i], &p = r.continuum_onsets[i + 1];
-    t.rows.push_back(
-        {c.variants[m.variant].name, formatCompact(m.width_d), onsetCell(m), onsetCell(p)});
+    t.rows.push_back({c.variants[m.variant].name,
+                      formatCompact(m.width_d) + (m.periodic ? " periodic" : " walls"),
+                      onsetCell(m), onsetCell(p)});
   }
   return t;
 }
 
-// CPU seconds per drive cycle against the box width, both models, per variant and Gamma.
+// Both models' cost per cycle against the width over the points of one variant, Gamma and
+// boundary; false when none has both costs.
+bool addCostSeries(const SurfaceWavesResults& r, const SurfaceWavePoint& like,
+                   const std::string& name, const char* color, Figure& fig) {
+  std::vector<double> w, model, particles;
+  for (const ContinuumWavePair& p : r.continuum) {
+    const SurfaceWavePoint& q = p.continuum.point;
+    if (q.variant != like.variant || q.gamma != like.gamma || q.periodic != like.periodic ||
+        !std::isfinite(p.continuum_cpu_per_cycle) || !std::isfinite(p.particles_cpu_per_cycle))
+      continue;
+    w.push_back(q.width_d);
+    model.push_back(p.continuum_cpu_per_cycle);
+    particles.push_back(p.particles_cpu_per_cycle);
+  }
+  if (w.empty()) return false;
+  fig.series.push_back(styled(lineSeries(w, model, "continuum, " + name, color), "o", "-"));
+  fig.series.push_back(styled(lineSeries(w, particles, "particles, " + name, color), "s", "--"));
+  return true;
+}
+
+// CPU seconds per drive cycle against the box width, both models, per variant, Gamma and
+// boundary.
 Figure costFigure(const SurfaceWavesConfig& c, const SurfaceWavesResults& r) {
   Figure fig;
   fig.title = "Cost per drive cycle against the box width";
@@ -74,20 +96,16 @@ Figure costFigure(const SurfaceWavesConfig& c, const SurfaceWavesResults& r) {
   const char* colors[] = {"tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"};
   int n = 0;
   for (int v : c.continuum.variants)
-    for (double g : c.continuum.gammas) {
-      std::vector<double> w, model, particles;
-      for (const ContinuumWavePair& p : r.continuum)
-        if (p.continuum.point.variant == v && p.continuum.point.gamma == g &&
-            std::isfinite(p.continuum_cpu_per_cycle) && std::isfinite(p.particles_cpu_per_cycle))
-          w.push_back(p.continuum.point.width_d), model.push_back(p.continuum_cpu_per_cycle),
-              particles.push_back(p.particles_cpu_per_cycle);
-      if (w.empty()) continue;
-      const std::string name = fmt::format("{}, Gamma {}", c.variants[v].name, formatCompact(g));
-      const char* color = colors[n++ % 5];
-      fig.series.push_back(styled(lineSeries(w, model, "continuum, " + name, color), "o", "-"));
-      fig.series.push_back(
-          styled(lineSeries(w, particles, "particles, " + name, color), "s", "--"));
-    }
+    for (const std::string& b : c.continuum.boundaries)
+      for (double g : c.continuum.gammas) {
+        SurfaceWavePoint like;
+        like.variant = v;
+        like.gamma = g;
+        like.periodic = b == "periodic";
+        const std::string name =
+            fmt::format("{}, Gamma {}, {}", c.variants[v].name, formatCompact(g), b);
+        if (addCostSeries(r, like, name, colors[n % 5], fig)) ++n;
+      }
   return fig;
 }
 
@@ -103,7 +121,8 @@ void addContinuum(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, Rep
       fmt::format(
           "The 2D granular hydrodynamics of docs/hydro.md (\"The 2D model\"): the same "
           "closures and restitution laws as the particles' scene, nothing fitted to the "
-          "particles, in the same periodic box at f = {} Hz, {} of {} cells each, {} "
+          "particles, in the same box (periodic or between side walls) at f = {} Hz, {} of {} "
+          "cells each, {} "
           "cycles from the scene's start (hydro.start) with seeded column masses (seeds {}). Its "
           "surface is measured by the particles' rule (studies/hydro_run/ContinuumSurface.hpp) "
           "and its spectrum taken over the run's second half in windows of 10 cycles, with the "

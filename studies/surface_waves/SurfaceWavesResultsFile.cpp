@@ -27,6 +27,8 @@ void writeSummaries(h5::File& f, const std::string& scan,
     putValue(f, g, "runs_ok", s.ok);
     putValue(f, g, "windows", s.windows);
     putValue(f, g, "wave_fraction", s.wave_fraction);
+    putValue(f, g, "wave_windows", s.wave_windows);
+    putValue(f, g, "waves", s.waves());
     putValue(f, g, "detector_votes", s.detector_votes);
     putValue(f, g, "standing_mode", s.standing_mode);
     putMeasurement(f, g, "amplitude_d", s.amplitude_d);
@@ -44,6 +46,8 @@ void putSpectrum(h5::File& f, const std::string& g, const std::string& prefix,
   putValue(f, g, prefix + "runs_ok", s.ok);
   putValue(f, g, prefix + "windows", s.windows);
   putValue(f, g, prefix + "wave_fraction", s.wave_fraction);
+  putValue(f, g, prefix + "wave_windows", s.wave_windows);
+  putValue(f, g, prefix + "waves", s.waves());
   putValue(f, g, prefix + "standing_mode", s.standing_mode);
   putMeasurement(f, g, prefix + "amplitude_d", s.amplitude_d);
   putMeasurement(f, g, prefix + "wavelength_d", s.wavelength_d);
@@ -57,6 +61,7 @@ void writeContinuum(h5::File& f, const SurfaceWavesResults& r) {
     f.createGroup(g);
     putValue(f, g, "variant", p.continuum.point.variant);
     putValue(f, g, "width_d", p.continuum.point.width_d);
+    putValue(f, g, "periodic", p.continuum.point.periodic);
     putValue(f, g, "rows", p.continuum.point.rows);
     putValue(f, g, "frequency", p.continuum.point.frequency);
     putValue(f, g, "gamma", p.continuum.point.gamma);
@@ -77,6 +82,7 @@ void writeContinuum(h5::File& f, const SurfaceWavesResults& r) {
     f.writeStringAttribute(g, "model", i % 2 == 0 ? "continuum" : "particles");
     putValue(f, g, "variant", o.variant);
     putValue(f, g, "width_d", o.width_d);
+    putValue(f, g, "periodic", o.periodic);
     putValue(f, g, "frequency", o.frequency);
     putMeasurement(f, g, "gamma_c", o.gamma_c);
     f.writeStringAttribute(g, "bound", o.bound);

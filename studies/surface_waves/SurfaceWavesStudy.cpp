@@ -74,6 +74,13 @@ void requireAscending(StudyFile& f, const char* section, const char* key,
     if (!(v[i] > v[i - 1])) f.fail(section, key, "expected increasing values");
 }
 
+void requireBoundaries(StudyFile& f, const char* section, const std::vector<std::string>& v) {
+  if (v.empty()) f.fail(section, "boundaries", "expected at least one of periodic, walls");
+  for (const std::string& b : v)
+    if (b != "periodic" && b != "walls")
+      f.fail(section, "boundaries", "'" + b + "': valid boundaries are periodic, walls");
+}
+
 void readScans(StudyFile& f, SurfaceWavesConfig& c) {
   c.width_d = f.number("grid", "width", c.width_d);
   c.periodic = f.boolean("grid", "periodic", c.periodic);
@@ -100,9 +107,7 @@ void readScans(StudyFile& f, SurfaceWavesConfig& c) {
   if (c.rows < 1) f.fail("grid", "rows", "expected at least 1 row");
   for (int r : c.depth_rows)
     if (r < 1) f.fail("depths", "rows", "expected at least 1 row");
-  for (const std::string& b : c.boundaries)
-    if (b != "periodic" && b != "walls")
-      f.fail("widths", "boundaries", "'" + b + "': valid boundaries are periodic, walls");
+  requireBoundaries(f, "widths", c.boundaries);
 }
 
 // [continuum]: absent or without variants, no continuum runs.
@@ -110,6 +115,7 @@ void readContinuum(StudyFile& f, SurfaceWavesConfig& c) {
   ContinuumWavesConfig& k = c.continuum;
   k.variants = variantList(f, "continuum", c, {});
   k.widths_d = f.numbers("continuum", "widths", {c.width_d});
+  k.boundaries = f.strings("continuum", "boundaries", k.boundaries);
   k.gammas = f.numbers("continuum", "gammas", k.gammas);
   k.frequency = f.number("continuum", "frequency", c.frequencies.front());
   k.cycles = f.integer("continuum", "cycles", k.cycles);
@@ -124,6 +130,7 @@ void readContinuum(StudyFile& f, SurfaceWavesConfig& c) {
     return;
   }
   requirePositive(f, "continuum", "widths", k.widths_d);
+  requireBoundaries(f, "continuum", k.boundaries);
   requireAscending(f, "continuum", "gammas", k.gammas);
   requirePositive(f, "continuum", "gammas", k.gammas);
   if (!(k.frequency > 0)) f.fail("continuum", "frequency", "expected a positive frequency");
@@ -184,27 +191,28 @@ std::vector<SurfaceWavePoint> SurfaceWavesConfig::depthPoints() const {
   return out;
 }
 
-std::vector<SurfaceWavePoint> SurfaceWavesConfig::continuumPoints() const {
-  std::vector<SurfaceWavePoint> out;
+std::vector<SurfaceWavePoint> SurfaceWavesConfig::continuumPoints(bool particle_seeds) const {
+  std::vector<SurfaceWavePoint> boxes;  // seed unset
   for (int v : continuum.variants)
-    for (double w : continuum.widths_d)
-      for (double g : continuum.gammas)
-        for (int s : continuum.seeds) out.push_back({v, w, true, rows, continuum.frequency, g, s});
+    for (const std::string& b : continuum.boundaries)
+      for (double w : continuum.widths_d)
+        boxes.push_back({v, w, b == "periodic", rows, continuum.frequency, 0, 0});
+  std::vector<SurfaceWavePoint> out;
+  for (const SurfaceWavePoint& box : boxes)
+    for (double g : continuum.gammas)
+      for (int s : particle_seeds ? seeds : continuum.seeds)
+        out.push_back({box.variant, box.width_d, box.periodic, rows, box.frequency, g, s});
   return out;
 }
 
 std::vector<SurfaceWavePoint> SurfaceWavesConfig::continuumParticlePoints() const {
-  std::vector<SurfaceWavePoint> out;
-  for (int v : continuum.variants)
-    for (double w : continuum.widths_d)
-      for (double g : continuum.gammas)
-        for (int s : seeds) out.push_back({v, w, true, rows, continuum.frequency, g, s});
-  return out;
+  return continuumPoints(true);
 }
 
 std::string SurfaceWavesConfig::continuumLabel(const SurfaceWavePoint& p) const {
-  return fmt::format("2D continuum {} W={} rows={} f={} Gamma={} seed={}", variants[p.variant].name,
-                     formatCompact(p.width_d), p.rows, formatCompact(p.frequency),
+  return fmt::format("2D continuum {} W={} {} rows={} f={} Gamma={} seed={}",
+                     variants[p.variant].name, formatCompact(p.width_d),
+                     p.periodic ? "periodic" : "walls", p.rows, formatCompact(p.frequency),
                      formatCompact(p.gamma), p.seed);
 }
 

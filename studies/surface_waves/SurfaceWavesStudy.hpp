@@ -34,13 +34,14 @@ struct SurfaceWavePoint {
 };
 
 // The 2D continuum (hydro.dimensions = 2; docs/hydro.md, "The 2D model") beside the
-// particles: every variant of `variants` at every Gamma and width, periodic (the 2D continuum
-// between side walls is not done), the base box's rows, at one frequency, one continuum run
-// per seed (the seed perturbs its column masses); the particles at the same points are
-// planned too. Empty `variants`: no continuum runs.
+// particles: every variant of `variants` at every Gamma, width and boundary (periodic or side
+// walls), the base box's rows, at one frequency, one continuum run per seed (the seed perturbs
+// its column masses); the particles at the same points are planned too. Empty `variants`: no
+// continuum runs.
 struct ContinuumWavesConfig {
   std::vector<int> variants;  // indices into SurfaceWavesConfig::variants
   std::vector<double> widths_d{120}, gammas{4};
+  std::vector<std::string> boundaries{"periodic"};  // "periodic", "walls"
   double frequency = 10;
   int cycles = 80;  // the spectrum is taken over the second half, as the particles' transient
   int columns = 0;  // hydro.columns (0: one per 4 d of the width)
@@ -80,7 +81,7 @@ struct SurfaceWavesConfig {
   std::vector<SurfaceWavePoint> depthPoints() const;
   // The continuum's points (one per continuum seed) and the particles' at the same drive,
   // box and rows (one per particle seed).
-  std::vector<SurfaceWavePoint> continuumPoints() const;
+  std::vector<SurfaceWavePoint> continuumPoints(bool particle_seeds = false) const;
   std::vector<SurfaceWavePoint> continuumParticlePoints() const;
   std::string continuumLabel(const SurfaceWavePoint& p) const;
   int variantIndex(const std::string& name) const;  // -1 if absent

@@ -65,6 +65,28 @@ TEST_F(SurfaceWavesStudyPlan, ContinuumPointsPlanA2DHydroRunBesideTheParticlesAt
   EXPECT_EQ(particles_at_60, 2 * 2);  // two Gamma, the particles' two default seeds
 }
 
+TEST_F(SurfaceWavesStudyPlan, ContinuumBetweenSideWallsPlansWalledRunsOfBothModels) {
+  granwave::StudyFile f = file(
+      "[continuum]\nvariants = [\"wet\"]\nwidths = [60.0]\nboundaries = [\"periodic\", "
+      "\"walls\"]\ngammas = [4.0]\n");
+  const granwave::SurfaceWavesStudy study(f);
+  int hydro_walls = 0, hydro_periodic = 0, particles_walls = 0;
+  for (const granwave::RunRequest& q : study.plan()) {
+    const double width_d = q.scene.container.width / q.scene.particles.diameter;
+    if (std::abs(width_d - 60.0) > 1e-9) continue;
+    const bool walls = !q.scene.container.periodic_x;
+    if (q.kind == granwave::RunKind::Hydro) {
+      ++(walls ? hydro_walls : hydro_periodic);
+      EXPECT_NE(q.label.find(walls ? " walls " : " periodic "), std::string::npos) << q.label;
+    } else if (walls) {
+      ++particles_walls;
+    }
+  }
+  EXPECT_EQ(hydro_walls, 1);  // one Gamma, one continuum seed
+  EXPECT_EQ(hydro_periodic, 1);
+  EXPECT_EQ(particles_walls, 2);  // the particles' two default seeds
+}
+
 TEST_F(SurfaceWavesStudyPlan, WithoutContinuumVariantsNoHydroRunIsPlanned) {
   granwave::StudyFile f = file("");
   const granwave::SurfaceWavesStudy study(f);
@@ -81,7 +103,9 @@ TEST_F(SurfaceWavesStudyPlan, ContinuumKeysOutOfRangeAreRefusedNamingTheKey) {
                                                         {"columns = -1\n", "columns"},
                                                         {"gammas = [0.0]\n", "gammas"},
                                                         {"widths = [60.5]\n", "widths"},
-                                                        {"seeds = [1, 1]\n", "seeds"}}) {
+                                                        {"seeds = [1, 1]\n", "seeds"},
+                                                        {"boundaries = [\"open\"]\n", "boundaries"},
+                                                        {"boundaries = []\n", "boundaries"}}) {
     granwave::StudyFile f = file(wet + extra);
     const std::string message = studyError([&] { granwave::SurfaceWavesStudy study(f); });
     EXPECT_TRUE(contains(message, "[continuum] " + key)) << message;

@@ -1,0 +1,90 @@
+// When a point of the surface-waves study waves (its seeds' windows pooled) and where its onset
+// lies: SurfaceWaveSummary::waves, summarise and waveOnset on made-up runs of known windows.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "studies/surface_waves/SurfaceWaveOnset.hpp"
+#include "studies/surface_waves/SurfaceWavesAnalysis.hpp"
+
+namespace granwave {
+namespace {
+
+// A finished run at Gamma `gamma` (seed `seed`) of `windows` spectrum windows, `wave_windows`
+// of them with an f/2 wave, and a mean amplitude `amplitude_d` (d) over its windows.
+SurfaceWaveRun run(double gamma, int seed, int windows, int wave_windows, double amplitude_d) {
+  SurfaceWaveRun r;
+  r.point.gamma = gamma;
+  r.point.seed = seed;
+  r.ok = r.spectrum = true;
+  r.windows = windows;
+  r.wave_windows = wave_windows;
+  // The fraction as the spectrum sums it, 1 / windows per window with a wave.
+  for (int k = 0; k < wave_windows; ++k) r.wave_fraction += 1.0 / windows;
+  r.amplitude_d = {amplitude_d, 0.3};
+  r.wavelength_d = {40, 1};
+  r.standing_mode = 3;
+  return r;
+}
+
+// The runs' points combined over seeds 1 and 2, one summary per Gamma.
+std::vector<SurfaceWaveSummary> summaries(const std::vector<SurfaceWaveRun>& runs) {
+  std::vector<SurfaceWavePoint> points;
+  for (const SurfaceWaveRun& r : runs) points.push_back(r.point);
+  return summarise(runs, points, 1);
+}
+
+TEST(SurfaceWaveSummary, HalfOfThePooledWindowsCountedExactlyWithAWaveOfThresholdAmplitudeWaves) {
+  // 6 of 6 and 0 of 6 windows: the per-run fractions (six sixths sum to 0.9999999999999999)
+  // pooled as fraction x windows gave 0.49999999999999994 of 12.
+  const auto s = summaries({run(4, 1, 6, 6, 1.0), run(4, 2, 6, 0, 1.0)});
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_EQ(s[0].wave_windows, 6);
+  EXPECT_EQ(s[0].windows, 12);
+  EXPECT_EQ(s[0].wave_fraction, 0.5);
+  EXPECT_TRUE(s[0].waves());
+}
+
+TEST(SurfaceWaveSummary, HalfTheWindowsPassingTheThresholdWithAMeanBelowItIsNotAWave) {
+  // The wet layer's whole-box tilts at 25 Hz: 6 of 12 windows, mean amplitude 0.20-0.25 d.
+  const auto s = summaries({run(5, 1, 6, 3, 0.22), run(5, 2, 6, 3, 0.25)});
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_EQ(s[0].wave_fraction, 0.5);
+  EXPECT_FALSE(s[0].waves());
+}
+
+TEST(SurfaceWaveSummary, FewerThanHalfTheWindowsIsNotAWaveWhateverTheAmplitude) {
+  const auto s = summaries({run(4, 1, 6, 3, 5.0), run(4, 2, 6, 2, 5.0)});
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_FALSE(s[0].waves());
+}
+
+TEST(SurfaceWaveOnset, FlatLayerBelowAndAWaveInEveryWindowAboveCrossAtTheBracketsMiddle) {
+  // Shares 0 and 1: Gamma_c = 2.5, its error the binomial parts (0.5/12 x 1/2 each) and the
+  // bracket's width / sqrt 12 in quadrature.
+  const auto s = summaries({run(2, 1, 12, 0, 0.1), run(3, 1, 12, 12, 4.6)});
+  const SurfaceWaveOnset o = waveOnset({2, 3}, 0, 10, 120, true, s);
+  ASSERT_TRUE(o.gamma_c.valid()) << o.bound;
+  EXPECT_DOUBLE_EQ(o.gamma_c.value, 2.5);
+  const double binomial = 0.5 / 12 * 0.5;
+  EXPECT_NEAR(o.gamma_c.error, std::sqrt(2 * binomial * binomial + 1.0 / 12), 1e-12);
+}
+
+TEST(SurfaceWaveOnset, TiltsInHalfTheWindowsGiveNoOnset) {
+  const auto s = summaries({run(4, 1, 12, 0, 0.1), run(5, 1, 12, 6, 0.22), run(6, 1, 12, 6, 0.25)});
+  const SurfaceWaveOnset o = waveOnset({4, 5, 6}, 0, 10, 120, true, s);
+  EXPECT_FALSE(o.gamma_c.valid());
+  EXPECT_EQ(o.bound, "> 6");
+}
+
+TEST(SurfaceWaveOnset, ShareAtOneHalfWithoutTheAmplitudeBelowAWavePlacesTheOnsetInTheBracket) {
+  const auto s = summaries({run(5, 1, 12, 6, 0.3), run(6, 1, 12, 12, 3.0)});
+  const SurfaceWaveOnset o = waveOnset({5, 6}, 0, 10, 120, true, s);
+  ASSERT_TRUE(o.gamma_c.valid()) << o.bound;
+  EXPECT_DOUBLE_EQ(o.gamma_c.value, 5.5);
+  EXPECT_NEAR(o.gamma_c.error, 1 / std::sqrt(12.0), 1e-12);
+}
+
+}  // namespace
+}  // namespace granwave
