@@ -254,9 +254,8 @@ int SurfaceWaveAnalysis::waveWindows() const {
       std::count_if(windows.begin(), windows.end(), [](const SurfaceWindow& w) { return w.wave; }));
 }
 
-bool pooledWindowsWave(int wave_windows, int windows, double mean_amplitude_d,
-                       const SurfaceSpectrumOptions& o) {
-  return windows > 0 && 2 * wave_windows >= windows && mean_amplitude_d >= o.amplitude_threshold;
+bool pooledWindowsWave(int wave_windows, int windows) {
+  return windows > 0 && 2 * wave_windows >= windows;
 }
 
 int surfaceWindowCycles(int cycles, const SurfaceSpectrumOptions& o) {

@@ -90,12 +90,10 @@ struct SurfaceWaveAnalysis {
 };
 
 // Whether windows pooled over runs (seeds) hold a wave: at least half of them hold an f/2 wave,
-// counted in whole windows (a sum of per-run fractions makes 6 of 12 fall below one half), and
-// their mean amplitude passes the per-window threshold as well: a pattern that passes it in half
-// the windows and lies far below it in the rest (whole-box tilts of 0.2 d mean amplitude at mode
-// 1 in the wet layer at 25 Hz, docs/physics.md) is not a standing wave of the layer.
-bool pooledWindowsWave(int wave_windows, int windows, double mean_amplitude_d,
-                       const SurfaceSpectrumOptions& options = {});
+// counted in whole windows (a sum of per-run fractions makes 6 of 12 fall below one half). A tie
+// is a wave: where one seed waves in every window and the other in none, the point is bistable
+// and its share, 1/2, is where the onset is placed (docs/studies.md).
+bool pooledWindowsWave(int wave_windows, int windows);
 
 // Throws std::invalid_argument for an odd or non-positive window.
 SurfaceWaveAnalysis analyseSurfaceWaves(const SurfaceSeries& series,

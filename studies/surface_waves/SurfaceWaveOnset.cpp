@@ -42,12 +42,6 @@ SurfaceWaveOnset waveOnset(const std::vector<double>& gammas, int variant, doubl
     if (!b.waves()) continue;
     const double ga = a.point.gamma, gb = b.point.gamma;
     const double wa = a.wave_fraction, wb = b.wave_fraction;
-    if (wa >= wb || wa >= 0.5) {
-      // a's windows pass the share but its mean amplitude does not: the share cannot place the
-      // crossing, which lies anywhere between the two (uniform: the interval's sd).
-      o.gamma_c = {0.5 * (ga + gb), (gb - ga) / std::sqrt(12.0)};
-      return o;
-    }
     const double t = (0.5 - wa) / (wb - wa);
     const double g = ga + t * (gb - ga);
     // d g / d wa = (gb - ga) (t - 1) / (wb - wa), d g / d wb = -(gb - ga) t / (wb - wa).

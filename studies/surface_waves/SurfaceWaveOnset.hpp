@@ -2,15 +2,13 @@
 // The onset of surface waves and the dissipation axis of the surface-waves study.
 //
 // Onset: for each variant and frequency of the base box, Gamma_c is where the point first waves
-// (SurfaceWaveSummary::waves: half its windows pooled over seeds hold an f/2 standing wave and
-// their mean amplitude passes the threshold), placed where the share of such windows rises
-// through 1/2, linear between the two Gamma that bracket it. Its error propagates the binomial
+// (SurfaceWaveSummary::waves: half its windows pooled over seeds, counted, hold an f/2 standing
+// wave), where the share of such windows rises through 1/2, linear between the two Gamma that
+// bracket it. Its error propagates the binomial
 // error of the two shares, sqrt(w (1 - w) / n) with n the windows at each point (windows of 10
 // cycles treated as independent), through the interpolation, and adds the bracket's width /
 // sqrt(12) when one share is exactly 0 or 1 (the crossing is then only known to lie in the
-// bracket). Where the lower point's share already reaches 1/2 but its amplitude does not, the
-// crossing is the bracket's middle with that error alone. Without a crossing Gamma_c lies below
-// the first or above the last Gamma.
+// bracket). Without a crossing Gamma_c lies below the first or above the last Gamma.
 //
 // Dissipation: each variant's effective restitution of the pair impacts and its energy lost
 // per cycle over its mean kinetic energy, at [dissipation] gamma and the first frequency, beside

@@ -16,9 +16,7 @@
 
 namespace granwave {
 
-bool SurfaceWaveSummary::waves() const {
-  return pooledWindowsWave(wave_windows, windows, amplitude_d.value);
-}
+bool SurfaceWaveSummary::waves() const { return pooledWindowsWave(wave_windows, windows); }
 
 namespace {
 

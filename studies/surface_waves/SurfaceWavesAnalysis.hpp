@@ -39,8 +39,8 @@ struct SurfaceWaveSummary {
   int seeds = 0, ok = 0, windows = 0, wave_windows = 0, detector_votes = 0, standing_mode = 0;
   double wave_fraction = 0;  // wave_windows / windows, pooled over seeds
   Measurement amplitude_d, wavelength_d, share, rms_vx, e_eff, loss_per_cycle;
-  // Half the pooled windows or more hold a wave and the mean amplitude passes the threshold
-  // (coarse_grain/SurfaceWaveSpectrum.hpp, pooledWindowsWave).
+  // Half the pooled windows or more hold a wave (coarse_grain/SurfaceWaveSpectrum.hpp,
+  // pooledWindowsWave).
   bool waves() const;
 };
 

@@ -152,8 +152,9 @@ void addDispersion(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, Re
     f.series.push_back(us);
   }
   f.caption =
-      "Points: the f/2 standing wave's wavelength (mean over windows and seeds) where at least "
-      "half of the windows have one; H = rows x d. Line: the fit to vertically vibrated layers "
+      "Points: the f/2 standing wave's wavelength (mean over windows and seeds) where the point "
+      "waves (half its windows or more, seeds pooled, with a wave); H = rows x d. Line: the fit to "
+      "vertically vibrated layers "
       "of bronze spheres in Umbanhowar & Swinney, Physica A 288, 344 (2000).";
   sec.add(f);
   sec.add(t);

@@ -53,8 +53,9 @@ std::string method(const SurfaceWavesConfig& c) {
 void addOnset(const SurfaceWavesConfig& c, const SurfaceWavesResults& r, Report& report) {
   ReportSection& sec = report.section(
       "Onset of f/2 surface waves",
-      fmt::format("Base box: W = {} d, {}, {} rows. Gamma_c is where the share of windows with a "
-                  "wave rises through 1/2 (SurfaceWaveOnset.hpp).",
+      fmt::format("Base box: W = {} d, {}, {} rows. A point waves when half its windows or more "
+                  "(seeds pooled, counted) have a wave; Gamma_c is where the share of windows with "
+                  "a wave rises through 1/2 (SurfaceWaveOnset.hpp).",
                   formatCompact(c.width_d), c.periodic ? "periodic" : "side walls", c.rows));
   for (double f : c.frequencies) {
     Figure fig;
@@ -131,10 +132,11 @@ void addMomentumRatio(const SurfaceWavesResults& r, Report& report) {
       "f (Hz)",       "Gamma", "r_x", "dry: windows with a wave", "wet: windows with a wave",
       "noise control"};
   for (const MomentumRatioPoint& p : r.r_x)
-    t.rows.push_back({formatCompact(p.frequency), formatCompact(p.gamma), format(p.r_x),
-                      fmt::format("{:.0f} %", 100 * p.dry_wave_fraction),
-                      fmt::format("{:.0f} %", 100 * p.wet_wave_fraction),
-                      p.control() ? "yes (no waves)" : "no"});
+    t.rows.push_back(
+        {formatCompact(p.frequency), formatCompact(p.gamma), format(p.r_x),
+         fmt::format("{:.0f} %{}", 100 * p.dry_wave_fraction, p.dry_waves ? " (waves)" : ""),
+         fmt::format("{:.0f} %{}", 100 * p.wet_wave_fraction, p.wet_waves ? " (waves)" : ""),
+         p.control() ? "yes (no waves)" : "no"});
   sec.add(t);
 }
 

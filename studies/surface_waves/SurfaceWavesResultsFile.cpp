@@ -116,7 +116,7 @@ void writeOnsets(h5::File& f, const SurfaceWavesResults& r) {
 void writeMomentumRatios(h5::File& f, const SurfaceWavesResults& r) {
   const std::string g = kRoot + "/r_x";
   f.createGroup(g);
-  std::vector<double> freq, gamma, value, error, dry, wet;
+  std::vector<double> freq, gamma, value, error, dry, wet, dry_waves, wet_waves;
   for (const MomentumRatioPoint& p : r.r_x) {
     freq.push_back(p.frequency);
     gamma.push_back(p.gamma);
@@ -124,6 +124,8 @@ void writeMomentumRatios(h5::File& f, const SurfaceWavesResults& r) {
     error.push_back(p.r_x.error);
     dry.push_back(p.dry_wave_fraction);
     wet.push_back(p.wet_wave_fraction);
+    dry_waves.push_back(p.dry_waves);
+    wet_waves.push_back(p.wet_waves);
   }
   putSeries(f, g + "/frequency", freq, "Hz");
   putSeries(f, g + "/gamma", gamma, "1");
@@ -131,6 +133,8 @@ void writeMomentumRatios(h5::File& f, const SurfaceWavesResults& r) {
   putSeries(f, g + "/r_x_error", error, "1");
   putSeries(f, g + "/dry_wave_fraction", dry, "1");
   putSeries(f, g + "/wet_wave_fraction", wet, "1");
+  putSeries(f, g + "/dry_waves", dry_waves, "1");
+  putSeries(f, g + "/wet_waves", wet_waves, "1");
   putMeasurement(f, g, "with_waves", r.r_x_waves);
   putMeasurement(f, g, "control_without_waves", r.r_x_control);
 }

@@ -72,7 +72,7 @@ TEST(SurfaceWaveSpectrum, StandingSubharmonicWaveGivesItsModeAmplitudeAndFullSha
   EXPECT_NEAR(a.subharmonic_share, 1.0, 1e-9);
   EXPECT_DOUBLE_EQ(a.wave_fraction, 1.0);
   EXPECT_EQ(a.waveWindows(), 4);
-  EXPECT_TRUE(pooledWindowsWave(a.waveWindows(), 4, a.amplitude_d));
+  EXPECT_TRUE(pooledWindowsWave(a.waveWindows(), static_cast<int>(a.windows.size())));
   EXPECT_NEAR(a.amplitude_error_d, 0.0, 1e-9);
   EXPECT_NEAR(a.windows[0].crest_d, 1.5, 1e-9);
   // The temporal spectrum of the mode: all power in the f/2 family (bins of f / W = f / 10:
@@ -112,6 +112,8 @@ TEST(SurfaceWaveSpectrum, WhiteNoiseHasTheNoiseFloorOfItsVarianceAndNoWave) {
   EXPECT_NEAR(a.noise_d, 0.3 * std::sqrt(2.0 / 600.0), 0.06 * 0.3 * std::sqrt(2.0 / 600.0));
   EXPECT_DOUBLE_EQ(a.wave_fraction, 0.0);
   EXPECT_EQ(a.waveWindows(), 0);
+  EXPECT_FALSE(pooledWindowsWave(a.waveWindows(), static_cast<int>(a.windows.size())));
+  EXPECT_FALSE(pooledWindowsWave(0, 0));  // no windows: nothing measured, no wave
   EXPECT_LT(a.amplitude_d, 0.5);
 }
 

@@ -12,8 +12,11 @@ namespace granwave {
 namespace {
 
 // A finished run at Gamma `gamma` (seed `seed`) of `windows` spectrum windows, `wave_windows`
-// of them with an f/2 wave, and a mean amplitude `amplitude_d` (d) over its windows.
-SurfaceWaveRun run(double gamma, int seed, int windows, int wave_windows, double amplitude_d) {
+// of them with an f/2 wave, and a mean amplitude `amplitude_d` (d) over its windows with the
+// standard error `error_d` over them. (A window with a wave has at least 0.5 d, so k waving
+// windows of n make the mean at least k / n x 0.5 d.)
+SurfaceWaveRun run(double gamma, int seed, int windows, int wave_windows, double amplitude_d,
+                   double error_d = 0.3) {
   SurfaceWaveRun r;
   r.point.gamma = gamma;
   r.point.seed = seed;
@@ -22,7 +25,7 @@ SurfaceWaveRun run(double gamma, int seed, int windows, int wave_windows, double
   r.wave_windows = wave_windows;
   // The fraction as the spectrum sums it, 1 / windows per window with a wave.
   for (int k = 0; k < wave_windows; ++k) r.wave_fraction += 1.0 / windows;
-  r.amplitude_d = {amplitude_d, 0.3};
+  r.amplitude_d = {amplitude_d, error_d};
   r.wavelength_d = {40, 1};
   r.standing_mode = 3;
   return r;
@@ -46,14 +49,6 @@ TEST(SurfaceWaveSummary, HalfOfThePooledWindowsCountedExactlyWithAWaveOfThreshol
   EXPECT_TRUE(s[0].waves());
 }
 
-TEST(SurfaceWaveSummary, HalfTheWindowsPassingTheThresholdWithAMeanBelowItIsNotAWave) {
-  // The wet layer's whole-box tilts at 25 Hz: 6 of 12 windows, mean amplitude 0.20-0.25 d.
-  const auto s = summaries({run(5, 1, 6, 3, 0.22), run(5, 2, 6, 3, 0.25)});
-  ASSERT_EQ(s.size(), 1u);
-  EXPECT_EQ(s[0].wave_fraction, 0.5);
-  EXPECT_FALSE(s[0].waves());
-}
-
 TEST(SurfaceWaveSummary, FewerThanHalfTheWindowsIsNotAWaveWhateverTheAmplitude) {
   const auto s = summaries({run(4, 1, 6, 3, 5.0), run(4, 2, 6, 2, 5.0)});
   ASSERT_EQ(s.size(), 1u);
@@ -71,19 +66,30 @@ TEST(SurfaceWaveOnset, FlatLayerBelowAndAWaveInEveryWindowAboveCrossAtTheBracket
   EXPECT_NEAR(o.gamma_c.error, std::sqrt(2 * binomial * binomial + 1.0 / 12), 1e-12);
 }
 
-TEST(SurfaceWaveOnset, TiltsInHalfTheWindowsGiveNoOnset) {
-  const auto s = summaries({run(4, 1, 12, 0, 0.1), run(5, 1, 12, 6, 0.22), run(6, 1, 12, 6, 0.25)});
-  const SurfaceWaveOnset o = waveOnset({4, 5, 6}, 0, 10, 120, true, s);
-  EXPECT_FALSE(o.gamma_c.valid());
-  EXPECT_EQ(o.bound, "> 6");
+TEST(SurfaceWaveOnset, OneSeedOfTwoWavingInEveryWindowPlacesTheOnsetAtThatGamma) {
+  // The wet layer at 25 Hz: flat at Gamma 4; at Gamma 5 one seed holds a mode-1 wave in all 6
+  // windows and the other none (a bistable point, share exactly 1/2). Gamma_c = 5, its error the
+  // binomial part of the upper share, sqrt(0.25 / 12) / (1/2), and the bracket's width / sqrt 12
+  // (the lower share is 0), in quadrature.
+  const auto s = summaries(
+      {run(4, 1, 6, 0, 0.1), run(4, 2, 6, 0, 0.1), run(5, 1, 6, 6, 1.2), run(5, 2, 6, 0, 0.1)});
+  const SurfaceWaveOnset o = waveOnset({4, 5}, 0, 10, 120, true, s);
+  ASSERT_TRUE(o.gamma_c.valid()) << o.bound;
+  EXPECT_NEAR(o.gamma_c.value, 5.0, 1e-12);
+  EXPECT_NEAR(o.gamma_c.error, std::hypot(std::sqrt(0.25 / 12) / 0.5, 1 / std::sqrt(12.0)), 1e-12);
 }
 
-TEST(SurfaceWaveOnset, ShareAtOneHalfWithoutTheAmplitudeBelowAWavePlacesTheOnsetInTheBracket) {
-  const auto s = summaries({run(5, 1, 12, 6, 0.3), run(6, 1, 12, 12, 3.0)});
-  const SurfaceWaveOnset o = waveOnset({5, 6}, 0, 10, 120, true, s);
-  ASSERT_TRUE(o.gamma_c.valid()) << o.bound;
-  EXPECT_DOUBLE_EQ(o.gamma_c.value, 5.5);
-  EXPECT_NEAR(o.gamma_c.error, 1 / std::sqrt(12.0), 1e-12);
+TEST(SurfaceWaveOnset, PointsOfTheOtherBoundaryAreNotPartOfTheCurve) {
+  // Walled points that wave beside periodic ones that do not: the periodic curve has no onset.
+  std::vector<SurfaceWaveRun> runs{run(2, 1, 12, 0, 0.1), run(3, 1, 12, 0, 0.1)};
+  for (double g : {2.0, 3.0}) {
+    SurfaceWaveRun walled = run(g, 1, 12, 12, 3.0);
+    walled.point.periodic = false;
+    runs.push_back(walled);
+  }
+  const auto s = summaries(runs);
+  EXPECT_EQ(waveOnset({2, 3}, 0, 10, 120, true, s).bound, "> 3");
+  EXPECT_EQ(waveOnset({2, 3}, 0, 10, 120, false, s).bound, "< 2");
 }
 
 }  // namespace
