@@ -195,7 +195,6 @@ void summarise(const std::vector<WindowResult>& windows, const SurfaceSeries& s,
     lambda.push_back(w.window.wavelength_d);
     share.push_back(w.window.subharmonic_share);
     a.noise_d += w.window.noise_d / nw;
-    a.wave_fraction += w.window.wave / nw;
     ++standing[w.window.standing_mode];
     for (int m = 1; m < modes; ++m) {
       a.power_subharmonic[m] += w.parts[m].p_sub / nw;
@@ -204,6 +203,8 @@ void summarise(const std::vector<WindowResult>& windows, const SurfaceSeries& s,
     }
     for (std::size_t j = 0; j < w.temporal.size(); ++j) a.temporal_power[j] += w.temporal[j] / nw;
   }
+  // Counted, not summed as 1 / nw per window: six sixths would sum to 0.9999999999999999.
+  a.wave_fraction = a.waveWindows() / nw;
   for (int m = 0; m < modes; ++m) a.mode_wavenumber[m] = wavenumberOf(s, m);
   for (std::size_t j = 0; j < a.temporal_power.size(); ++j)
     a.frequency_over_f.push_back(static_cast<double>(j) / a.window_cycles);

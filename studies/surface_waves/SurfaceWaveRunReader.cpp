@@ -56,7 +56,6 @@ void readSpectrum(const SurfaceWaveAnalysis& s, SurfaceWaveRun& r) {
   if (lambda.size() == 1) r.wavelength_d.error = 0;
   r.share = {s.subharmonic_share, s.subharmonic_share_error};
   r.noise_d = s.noise_d;
-  r.wave_fraction = s.wave_fraction;
   r.windows = static_cast<int>(s.windows.size());
   r.wave_windows = s.waveWindows();
   r.standing_mode = s.standing_mode;

@@ -21,7 +21,7 @@ struct SurfaceWaveRun {
   bool ok = false, spectrum = false;
   // The spectrum (windows of 10 cycles): standing f/2 wave and temporal response.
   Measurement amplitude_d, wavelength_d, share;
-  double noise_d = 0, wave_fraction = 0;
+  double noise_d = 0;
   int windows = 0, wave_windows = 0, standing_mode = 0;
   // The stability study's detector (one phase, 16 cycles).
   bool detector_wave = false;

@@ -23,8 +23,6 @@ SurfaceWaveRun run(double gamma, int seed, int windows, int wave_windows, double
   r.ok = r.spectrum = true;
   r.windows = windows;
   r.wave_windows = wave_windows;
-  // The fraction as the spectrum sums it, 1 / windows per window with a wave.
-  for (int k = 0; k < wave_windows; ++k) r.wave_fraction += 1.0 / windows;
   r.amplitude_d = {amplitude_d, error_d};
   r.wavelength_d = {40, 1};
   r.standing_mode = 3;
@@ -39,8 +37,8 @@ std::vector<SurfaceWaveSummary> summaries(const std::vector<SurfaceWaveRun>& run
 }
 
 TEST(SurfaceWaveSummary, HalfOfThePooledWindowsCountedExactlyWithAWaveOfThresholdAmplitudeWaves) {
-  // 6 of 6 and 0 of 6 windows: the per-run fractions (six sixths sum to 0.9999999999999999)
-  // pooled as fraction x windows gave 0.49999999999999994 of 12.
+  // 6 of 6 and 0 of 6 windows: the per-run fractions, once summed as six sixths
+  // (0.9999999999999999) and pooled as fraction x windows, gave 0.49999999999999994 of 12.
   const auto s = summaries({run(4, 1, 6, 6, 1.0), run(4, 2, 6, 0, 1.0)});
   ASSERT_EQ(s.size(), 1u);
   EXPECT_EQ(s[0].wave_windows, 6);
