@@ -155,8 +155,8 @@ std::pair<WallExchange<S>, WallExchange<S>> GranularHydro1D::wallExchanges(doubl
     // A held node's cell loses the particles' wall collisions' energy, as in the spring's
     // contact; the landing's loss of the node's motion is an event (wallEvent).
     const auto held = [&](bool on, const S& reaction, const LocalState<S>& l) {
-      return on ? WallExchange<S>{reaction, zero, l.wall_loss * l.p_kinetic}
-                : WallExchange<S>{zero, zero, zero};
+      return on ? WallExchange<S>{reaction, zero, l.wall_loss * l.p_kinetic, zero}
+                : WallExchange<S>{zero, zero, zero, zero};
     };
     return {held(hold.plate, plate, w.local[0]), held(hold.lid, lid, w.local[N - 1])};
   }

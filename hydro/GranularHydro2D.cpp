@@ -96,6 +96,8 @@ GranularHydro2D::EnergyRates GranularHydro2D::ratesOf(double t, const Workspace<
     const auto& wall = w.walls[i];
     r.plate_work += dx() * (wall.plate_stress - wall.lid_stress) * vb;
     r.wall_loss += dx() * (wall.plate_loss + wall.lid_loss);
+    r.contact_drift += dx() * (wall.plate_elastic * w.drift[w.grid.node(i, 0)] -
+                               wall.lid_elastic * w.drift[w.grid.node(i, g_.cells)]);
   }
   for (std::size_t c = 0; c < w.local.size(); ++c) {
     r.collisional_loss += w.local[c].cooling * dx() * w.len[c];

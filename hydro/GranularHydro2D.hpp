@@ -9,7 +9,8 @@
 // velocity u_ik sits (a vertically Lagrangian, horizontally Eulerian grid):
 //
 //   cell mass per unit width  mu_ik = mu0_ik + (Phi_i-1,k - Phi_ik)/dx,  dPhi_ik/dt = F_ik
-//   dz_ij/dt = w_ij - (u dz_j/dx)_ij              (the layer interfaces are material)
+//   dz_ij/dt = w_ij - (u dz_j/dx)_ij              (the layer interfaces are material; the
+//                                                  drift weighted by the mass fluxes)
 //   M_node dw/dt = F_z - M_node g_eff(t) + advection along the layer
 //   M_face du/dt = F_x + advection along the layer
 //   M_cell theta ds/dt = heating - cooling - div q + advection along the layer
@@ -113,9 +114,14 @@ class GranularHydro2D {
 
   // The powers that change the layer's lab-frame energy, per unit depth (W/m), as
   // GranularHydro1D::EnergyRates; side_wall_loss is the loss at explicit side walls.
+  // contact_drift is the rate at which the boundary nodes' drift (dz/dt = w - drift) changes
+  // the plate's and the lid's elastic energy, sum dx (sigma_plate drift_i0 - sigma_lid
+  // drift_iN): no force answers it (the walls act on w alone; docs/hydro.md, "Interfaces
+  // between columns"), so dE/dt = plate_work - losses + contact_drift exactly. It is not one
+  // of the budget's quadratures: it lies in a phase budget's closure.
   struct EnergyRates {
     double plate_work = 0, collisional_loss = 0, friction_loss = 0, wall_loss = 0;
-    double side_wall_loss = 0;
+    double side_wall_loss = 0, contact_drift = 0;
   };
   EnergyRates energyRates(double t, const double* U) const;
   // The lab-frame energy (J per unit depth): kinetic (nodes w, faces u), potential, internal,
@@ -158,9 +164,9 @@ class GranularHydro2D {
   CellRegularisation reg_;
   double mass_floor_;  // kg/m: the cell masses the closures see are floored smoothly here
   std::unique_ptr<Workspace<double>> values_;
-  // Made at the first Jacobian: 5 block colours x 5 (smooth) or 6 (rough) unknowns.
-  mutable std::unique_ptr<JetWorkspace<25>> smooth_jets_;
-  mutable std::unique_ptr<JetWorkspace<30>> rough_jets_;
+  // Made at the first Jacobian: 6 block colours x 5 (smooth) or 6 (rough) unknowns.
+  mutable std::unique_ptr<JetWorkspace<30>> smooth_jets_;
+  mutable std::unique_ptr<JetWorkspace<36>> rough_jets_;
 };
 
 }  // namespace granwave::hydro

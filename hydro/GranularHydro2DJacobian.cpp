@@ -1,7 +1,8 @@
 // The exact Jacobian of GranularHydro2D by forward-mode differentiation of its right-hand side
-// (hydro/Scalar.hpp), coloured: within a column, blocks five apart never meet in a row (as in
-// 1D), and columns more than 2 R apart (R = kColumnReach) never meet either, so one pass per
-// column colour, with 5 K directional derivatives, gives every element.
+// (hydro/Scalar.hpp), coloured: within a column, blocks six apart never meet in a row (a row
+// of block k reaches blocks k-2..k+3), and columns more than 2 R apart (R = kColumnReach)
+// never meet either, so one pass per column colour, with 6 K directional derivatives, gives
+// every element.
 #include <algorithm>
 #include <cmath>
 #include <vector>
@@ -13,7 +14,7 @@ namespace granwave::hydro {
 
 namespace {
 
-constexpr int kBlockColours = 5;
+constexpr int kBlockColours = 6;
 
 // Colours of the columns: equal colours are more than 2 R apart, cyclically when periodic
 // (the columns past the last whole group of 2 R + 1 get colours of their own).
@@ -40,13 +41,15 @@ std::vector<int> columnsNear(int i, int Nx, bool periodic, int reach) {
 }
 
 // Writes the derivatives of one coloured column entry (column `col`, block `b`, colour slot
-// `sl`) into the rows of the blocks b-2..b+2 of every column at `row_offsets`: the reach of
-// the operator's stencil. False on a derivative that is not finite.
+// `sl`) into the rows of the blocks b-3..b+2 of every column at `row_offsets`: the reach of
+// the operator's stencil (a row of block k depends on blocks k-2..k+3: u_k through the
+// drift of node k+2, whose mass fluxes see the density of layer k+2, bounded by z_k+3). False
+// on a derivative that is not finite.
 template <class Jets, class Writer>
 bool scatterColumnEntry(const Jets& dU, const std::vector<int>& row_offsets, int b, int N, int K,
                         int sl, int col, const Writer& write) {
   for (int offset : row_offsets)
-    for (int rb = std::max(0, b - 2); rb <= std::min(N, b + 2); ++rb)
+    for (int rb = std::max(0, b - 3); rb <= std::min(N, b + 2); ++rb)
       for (int e = 0; e < (rb == N ? 2 : K); ++e) {
         const int row = offset + rb * K + e;
         const double d = dU[row].derivatives()[sl];
@@ -91,11 +94,11 @@ int GranularHydro2D::jacobian(double t, const double* U, const SparseWriter& wri
                               bool in_column_only) const {
   if (rough()) {
     if (!rough_jets_)
-      rough_jets_ = std::make_unique<JetWorkspace<30>>(x_.columns, g_.cells, x_.periodic, size());
+      rough_jets_ = std::make_unique<JetWorkspace<36>>(x_.columns, g_.cells, x_.periodic, size());
     return jacobianWith(t, U, write, in_column_only, *rough_jets_);
   }
   if (!smooth_jets_)
-    smooth_jets_ = std::make_unique<JetWorkspace<25>>(x_.columns, g_.cells, x_.periodic, size());
+    smooth_jets_ = std::make_unique<JetWorkspace<30>>(x_.columns, g_.cells, x_.periodic, size());
   return jacobianWith(t, U, write, in_column_only, *smooth_jets_);
 }
 

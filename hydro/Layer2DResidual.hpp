@@ -55,6 +55,7 @@ int GranularHydro2D::residual(double t, const S* U, S* dU, Workspace<S>& w) cons
   layer2d::cellStates(v, w);
   layer2d::layerGeometry(v, w);
   layer2d::massFluxes(v, w);
+  layer2d::interfaceDrift(w);
   layer2d::cellStresses(v, w);
   layer2d::cornerStresses(v, w);
   layer2d::wallContacts(v, w);

@@ -64,32 +64,9 @@ void cellStates(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
     }
 }
 
-// The horizontal velocity of face column i at the height of interface j: the mean of the faces
-// of the cells the node bounds (a side wall's faces have u = 0).
-template <class S>
-S interfaceFaceVelocity(const StateView<S>& v, const ColumnGrid& g, int i, int j) {
-  if (j == 0) return v.u(i, 0);
-  if (j == g.N) return v.u(i, g.N - 1);
-  return 0.5 * (v.u(i, j - 1) + v.u(i, j));
-}
-
 // The layer between columns: each face's height (the mean of its two cells' lengths), each
-// node's interface slope dz/dx (central; mirrored at a side wall), the slope across each face
-// and each node's vertical drift, the rate u dz/dx at which flow along a sloped interface
-// moves it (the interfaces are material: dz/dt = w - drift).
-//
-// Why the drift is taken face by face, 0.5 sum over the node's two faces of U_f s_f (U_f the
-// face's horizontal velocity at the interface: the mean of its two layers' u, the one layer's
-// at the plate and the free surface; s_f the slope across it), and not as the mean velocity
-// times the central slope: a central slope is blind to interfaces whose heights alternate
-// from column to column. Mass that crosses a face between two columns at different heights
-// changes its potential energy by F g dz; only a drift that sees that dz moves the nodes
-// (whose vertical motion gravity acts on) by about as much (to leading order: F = h u rho* is
-// not exactly the node masses times U_f), and the pressure force on u, the derivative of the
-// stress power through G_xx's drift term, can then act on such a mode.
-// With the central slope no force acted on it, and alternate columns' top cells were squeezed
-// against the lid cycle after cycle (docs/hydro.md, "Interfaces between columns"). For smooth
-// interfaces the two agree to second order in dx.
+// node's interface slope dz/dx (central; mirrored at a side wall) and the slope across each
+// face (between the node's column and the next).
 template <class S>
 void layerGeometry(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const ColumnGrid& g = w.grid;
@@ -106,12 +83,52 @@ void layerGeometry(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
       w.face_slope[g.node(i, j)] = r < 0 ? zeroLike(v) : S((zr - v.z(i, j)) / dx);
     }
   }
+}
+
+// The mass flux through face column f at the height of interface j: half of each adjoining
+// layer's (one layer at the plate and at the free surface).
+template <class S>
+S interfaceFlux(const GranularHydro2D::Workspace<S>& w, int f, int j) {
+  const ColumnGrid& g = w.grid;
+  if (j == 0) return 0.5 * w.flux[g.cell(f, 0)];
+  if (j == g.N) return 0.5 * w.flux[g.cell(f, g.N - 1)];
+  return 0.5 * (w.flux[g.cell(f, j - 1)] + w.flux[g.cell(f, j)]);
+}
+
+// The sum of node (i, j)'s two cells' masses per unit width (the one cell's at the plate and
+// at the free surface): the node's mass is dx/2 times it.
+template <class S>
+S nodeMassSum(const GranularHydro2D::Workspace<S>& w, int i, int j) {
+  const ColumnGrid& g = w.grid;
+  if (j == 0) return w.mass[g.cell(i, 0)];
+  if (j == g.N) return w.mass[g.cell(i, g.N - 1)];
+  return w.mass[g.cell(i, j - 1)] + w.mass[g.cell(i, j)];
+}
+
+// Each node's vertical drift, the rate at which flow along a sloped interface moves it (the
+// interfaces are material: dz/dt = w - drift):
+//   drift_ij = (Q_ij s_ij + Q_lj s_lj) / (mu_below + mu_above),
+// Q the mass flux at the interface through each of the node's two faces (interfaceFlux), s the
+// slope across it. Why this form. Mass F crossing a face between columns whose cells sit at
+// different heights changes its potential energy by g F dz_c; summed over the faces that is
+// g dx sum Q s over (face, interface) pairs, and the nodes (of mass dx (mu_b + mu_a)/2) moving
+// down by their drift change it by -g sum m drift: with this drift the two are equal in every
+// state, so the horizontal flow does no work against gravity (as in the continuum, where
+// flow at a fixed height leaves the potential energy alone) and the operator's energy rates
+// are the lab-frame energy's derivative exactly (tests/hydro/Hydro2DEnergyBudgetTest). For a
+// layer uniform in density (F = mu u) it is 0.5 sum U_f s_f, the kinematic u dz/dx face by
+// face. Face by face, not the mean velocity times the central slope: a central slope is blind
+// to interfaces whose heights alternate from column to column, and with it a two-column mode
+// had no restoring force (docs/hydro.md, "Interfaces between columns").
+template <class S>
+void interfaceDrift(GranularHydro2D::Workspace<S>& w) {
+  const ColumnGrid& g = w.grid;
   for (int i = 0; i < g.Nx; ++i) {
     const int l = g.left(i);
     for (int j = 0; j <= g.N; ++j) {
-      S drift = interfaceFaceVelocity(v, g, i, j) * w.face_slope[g.node(i, j)];
-      if (l >= 0) drift += interfaceFaceVelocity(v, g, l, j) * w.face_slope[g.node(l, j)];
-      w.drift[g.node(i, j)] = 0.5 * drift;
+      S moved = interfaceFlux(w, i, j) * w.face_slope[g.node(i, j)];
+      if (l >= 0) moved += interfaceFlux(w, l, j) * w.face_slope[g.node(l, j)];
+      w.drift[g.node(i, j)] = moved / nodeMassSum(w, i, j);
     }
   }
 }
@@ -131,7 +148,7 @@ S upwind(const S& F, const S& L, const S& R, double width) {
 }
 
 // The mass fluxes F_ik = h u rho* through the faces (a side wall's is 0), rho* the upwinded,
-// limited density of the layer.
+// limited density of the layer, and their derivatives by u (the drift's, interfaceDrift).
 template <class S>
 void massFluxes(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const ColumnGrid& g = w.grid;
@@ -139,7 +156,7 @@ void massFluxes(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
   const double width2 = 1e-12 * reg.rho_max * reg.rho_max;
   for (int i = 0; i < g.Nx; ++i) {
     if (v.op.wallFace(i)) {
-      for (int k = 0; k < g.N; ++k) w.flux[g.cell(i, k)] = zeroLike(v);
+      for (int k = 0; k < g.N; ++k) w.flux[g.cell(i, k)] = w.flux_du[g.cell(i, k)] = zeroLike(v);
       continue;
     }
     const int a = g.mirrored(i, -1), r = g.mirrored(i, 1), b = g.mirrored(i, 2);
@@ -151,8 +168,9 @@ void massFluxes(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
       const S L = faceValue(rl, r0, r1, width2);
       const S R = faceValue(r2, r1, r0, width2);
       const S u = v.u(i, k);
-      w.flux[g.cell(i, k)] =
-          w.h[g.cell(i, k)] * (0.5 * u * (L + R) - 0.5 * smoothAbs(u, reg.u_width) * (R - L));
+      const S speed = smoothAbs(u, reg.u_width);
+      w.flux[g.cell(i, k)] = w.h[g.cell(i, k)] * (0.5 * u * (L + R) - 0.5 * speed * (R - L));
+      w.flux_du[g.cell(i, k)] = w.h[g.cell(i, k)] * (0.5 * (L + R) - 0.5 * (u / speed) * (R - L));
     }
   }
 }

@@ -16,17 +16,20 @@
 namespace granwave::hydro::layer2d {
 
 // Adds `coefficient` d(drift_ij)/du to the force of every face the drift of node (i, j)
-// depends on (Layer2DState.hpp, layerGeometry: 0.5 s_f U_f over the node's two faces).
+// depends on (Layer2DState.hpp, interfaceDrift: half of each adjoining layer's dF/du times the
+// slope across the face, over the node's mass sum).
 template <class S>
 void scatterNodeDrift(const GranularHydro2D& op, GranularHydro2D::Workspace<S>& w, int i, int j,
                       const S& coefficient) {
   const ColumnGrid& g = w.grid;
   const int l = g.left(i);
-  const double per_layer = 0.5 / ((j > 0 ? 1 : 0) + (j < g.N ? 1 : 0));
+  const S per_flux = 0.5 * coefficient / nodeMassSum(w, i, j);
   for (int k = j - 1; k <= j; ++k) {
     if (k < 0 || k >= g.N) continue;
-    if (l >= 0) w.fu[g.cell(l, k)] += coefficient * per_layer * w.face_slope[g.node(l, j)];
-    if (!op.wallFace(i)) w.fu[g.cell(i, k)] += coefficient * per_layer * w.face_slope[g.node(i, j)];
+    if (l >= 0)
+      w.fu[g.cell(l, k)] += per_flux * w.flux_du[g.cell(l, k)] * w.face_slope[g.node(l, j)];
+    if (!op.wallFace(i))
+      w.fu[g.cell(i, k)] += per_flux * w.flux_du[g.cell(i, k)] * w.face_slope[g.node(i, j)];
   }
 }
 
@@ -153,7 +156,7 @@ void wallContacts(const StateView<S>& v, GranularHydro2D::Workspace<S>& w) {
     w.fw[g.node(i, N)] -= dx * lid.stress;
     w.heat[b] += dx * (plate.heating - plate.loss);
     w.heat[t] += dx * (lid.heating - lid.loss);
-    w.walls[i] = {plate.stress, lid.stress, plate.loss, lid.loss};
+    w.walls[i] = {plate.stress, lid.stress, plate.loss, lid.loss, plate.elastic, lid.elastic};
   }
   w.side_loss = zeroLike(v);
   if (op.periodic()) return;

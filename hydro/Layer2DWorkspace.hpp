@@ -45,6 +45,7 @@ struct GranularHydro2D::Workspace {
         spin(Nx * N),
         local(Nx * N),
         flux(Nx * N),
+        flux_du(Nx * N),
         h(Nx * N),
         fu(Nx * N),
         zx(Nx * (N + 1)),
@@ -57,14 +58,16 @@ struct GranularHydro2D::Workspace {
   // same for the rotational energy (advection), rough particles' collisional rates, closures.
   std::vector<S> len, mass, rho, rho_eff, theta, zc, heat, heat_r, exchange, spin;
   std::vector<LocalState<S>> local;
-  // Faces: mass flux to the right (kg/s per unit depth), height, force on u (N per unit depth).
-  std::vector<S> flux, h, fu;
+  // Faces: mass flux to the right (kg/s per unit depth), its derivative by u, height, force on
+  // u (N per unit depth).
+  std::vector<S> flux, flux_du, h, fu;
   // Nodes: the interface's slope dz/dx (central), its slope between the node's column and
-  // the next (per face, as the faces), its vertical drift u dz/dx (Layer2DState.hpp), force on w.
+  // the next (per face, as the faces), its vertical drift (Layer2DState.hpp, interfaceDrift),
+  // force on w.
   std::vector<S> zx, face_slope, drift, fw;
-  // Per column: the plate's and the lid's stress and losses (energy rates).
+  // Per column: the plate's and the lid's stress, losses and elastic stress (energy rates).
   struct Wall {
-    S plate_stress, lid_stress, plate_loss, lid_loss;
+    S plate_stress, lid_stress, plate_loss, lid_loss, plate_elastic, lid_elastic;
   };
   std::vector<Wall> walls = std::vector<Wall>(grid.Nx);
   S side_loss{};

@@ -73,10 +73,12 @@ inline double wallContactEnergy(double gap, double sigma, double scale,
 }
 
 // The stress a wall exerts on the boundary node next to it, and the power its dashpot and
-// collisions take from the wall cell: [stress, dashpot heating, collisional loss].
+// collisions take from the wall cell: [stress, dashpot heating, collisional loss, the
+// stress's elastic part (minus the derivative of wallContactEnergy by the gap; 0 for a hard
+// wall's reaction, which stores no energy)].
 template <class S>
 struct WallExchange {
-  S stress, heating, loss;
+  S stress, heating, loss, elastic;
 };
 // The dashpot makes the boundary node's landing completely inelastic, as the layer's is (its
 // particles' bounce is the wall collisions' loss, a separate term): the cell's acoustic
@@ -92,7 +94,8 @@ WallExchange<S> wallExchange(const S& gap, const S& approach, const LocalState<S
   const S step = 0.5 * (1.0 + approach / smoothAbs(approach, u_width));
   const S damping = rho * cell.sound_speed + 2.0 * sqrt(c.stiffness * node_mass + 1e-30);
   const S dashpot = damping * approach * step * c.indicator;
-  return {c.elastic + dashpot, dashpot * approach, c.indicator * cell.wall_loss * cell.p_kinetic};
+  return {c.elastic + dashpot, dashpot * approach, c.indicator * cell.wall_loss * cell.p_kinetic,
+          c.elastic};
 }
 
 }  // namespace granwave::hydro

@@ -20,21 +20,14 @@ namespace granwave {
 namespace {
 
 // Per drive cycle over the window, in mJ, with each loss's share of the dissipation.
-void printBudget(const HydroRunContent& c) {
-  if (c.budget.empty()) return;
-  const auto perCycle = [&](const std::vector<double>& v) {
-    double sum = 0;
-    for (double x : v) sum += x;
-    return 1e3 * sum / c.windowCycles();
-  };
-  const double work = perCycle(c.budget.plate_work), pair = perCycle(c.budget.collisional_loss);
-  const double friction = perCycle(c.budget.friction_loss), wall = perCycle(c.budget.wall_loss);
-  const double lost = pair + friction + wall, change = perCycle(c.budget.energy_change);
+void printBudget(const RunEnergyBudget& budget, int window_cycles) {
+  if (budget.empty()) return;
+  const RunEnergyBudget::PerCycle p = budget.perCycle(window_cycles);
   fmt::print(
       "energy          per cycle: plate work {:.3f} mJ; lost {:.3f} mJ: pair collisions {:.0f} %, "
       "friction and rotation {:.0f} %, walls {:.0f} %; closure {:.1e} mJ\n",
-      work, lost, 100 * pair / lost, 100 * friction / lost, 100 * wall / lost,
-      change - (work - lost));
+      p.work, p.lost(), 100 * p.pair / p.lost(), 100 * p.friction / p.lost(),
+      100 * p.wall / p.lost(), p.closure);
 }
 
 void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunContent& c,
@@ -69,7 +62,7 @@ void printSummary(const HydroOptions& opt, const Scene& scene, const HydroRunCon
         e.peak_temperature);
   }
   fmt::print("{}", velocityFrontLines(c.lab));
-  printBudget(c);
+  printBudget(c.budget, c.windowCycles());
   fmt::print("output          {}\n", out);
 }
 
@@ -85,6 +78,7 @@ void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const s
       c.linear_iterations, c.preconditioner_jacobians);
   fmt::print("remaps          {} (hydro.remap_share), {:.3g} J/m moved into heat\n", c.remaps,
              c.remap_heat);
+  printBudget(c.budget, c.windowCycles());
   if (c.surface.available)
     fmt::print("{}", surfaceSpectrumLine(c.surface));
   else

@@ -54,6 +54,10 @@ Hydro2DRunContent hydro2DRunContent(const Scene& scene, const hydro::GranularHyd
     c.velocity_x.insert(c.velocity_x.end(), ph.velocity_x.begin(), ph.velocity_x.end());
     c.velocity_z.insert(c.velocity_z.end(), ph.velocity_z.begin(), ph.velocity_z.end());
     c.pressure.insert(c.pressure.end(), ph.pressure.begin(), ph.pressure.end());
+    const hydro::PhaseBudget& b = ph.budget;  // J of the box already (the layer's columns x dx)
+    if (op.hasEnergyBudget())
+      c.budget.addPhase(1.0, b.plate_work, b.collisional_loss, b.friction_loss, b.wall_loss,
+                        b.side_wall_loss, b.energy_change);
   }
   c.com_per_phase = r.com_per_phase;
   c.samples_per_cycle = o.samples_per_cycle;
@@ -83,7 +87,7 @@ std::unique_ptr<hydro::GranularHydro2D> hydro2DOperator(const Scene& scene,
       hydro::perturbedCellMasses(grid.columns, geometry.cells,
                                  scene.particles.count * dv.mass / scene.container.width,
                                  scene.hydro.perturbation, scene.run.seed),
-      hydroRegularisation(scene));
+      hydroRegularisation(scene), scene.hydro.energy_budget);
 }
 
 Hydro2DRunContent runHydro2DScene(const Scene& scene, const std::string& scene_name,

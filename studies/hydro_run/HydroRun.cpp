@@ -40,18 +40,12 @@ HydroRunContent hydroRunContent(const Scene& scene, const SceneDerived& dv,
   c.cpu_seconds = r.cpu_seconds;
   c.com_history = r.com_per_phase;
   c.phases_per_cycle = ro.samples_per_cycle;
-  if (scene.hydro.energy_budget) {
-    // J/m of the continuum's column -> J of the scene's box (width L_x).
-    const double w = scene.container.width;
+  if (scene.hydro.energy_budget)  // J/m of the continuum's column -> J of the scene's box
     for (const auto& ph : r.window) {
       const hydro::PhaseBudget& b = ph.budget;
-      c.budget.plate_work.push_back(w * b.plate_work);
-      c.budget.collisional_loss.push_back(w * b.collisional_loss);
-      c.budget.friction_loss.push_back(w * b.friction_loss);
-      c.budget.wall_loss.push_back(w * (b.wall_loss + b.side_wall_loss));
-      c.budget.energy_change.push_back(w * b.energy_change);
+      c.budget.addPhase(scene.container.width, b.plate_work, b.collisional_loss, b.friction_loss,
+                        b.wall_loss, b.side_wall_loss, b.energy_change);
     }
-  }
   c.steps = r.stats.steps;
   c.rhs_evals = r.stats.rhs_evals + r.stats.lin_rhs_evals;
   c.jacobian_evals = r.stats.jac_evals;

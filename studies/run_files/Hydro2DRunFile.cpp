@@ -174,6 +174,7 @@ void writeHydro2DRunFile(const std::string& path, const Hydro2DRunContent& c) {
   writeMesh(f, c);
   writeSolver(f, c);
   writeSurfaceWaves(f, c.surface);  // nothing when the run had too few cycles for a window
+  writeEnergyBudget(f, c.budget);   // nothing unless the scene asked for it
   f.createGroup("/parameters");
   f.writeStringDataset("/parameters/scene", c.scene_toml);
   af.commit();

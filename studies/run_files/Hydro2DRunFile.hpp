@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "coarse_grain/SurfaceWaveSpectrum.hpp"
+#include "studies/run_files/EnergyBudgetGroup.hpp"
 
 namespace granwave {
 
@@ -30,8 +31,12 @@ struct Hydro2DRunContent {
   std::int64_t preconditioner_jacobians = 0;
   std::int64_t remaps = 0;  // vertical remaps (hydro.remap_share)
   double remap_heat = 0;    // J per unit depth the remaps moved into heat, summed
-  std::string scene_toml;   // the fully resolved scene
+  // The energy that crossed the layer over each phase of the window (J), when the scene asked
+  // for it (hydro.energy_budget); empty otherwise.
+  RunEnergyBudget budget;
+  std::string scene_toml;  // the fully resolved scene
   std::size_t phases() const { return time.size(); }
+  int windowCycles() const { return static_cast<int>(phases()) / samples_per_cycle; }
 };
 
 // The file's root attribute "format": its name and layout version.

@@ -14,7 +14,6 @@ namespace {
 
 const std::string kPlateFrame = "/plate_frame";
 const std::string kSolver = "/solver";
-const std::string kBudget = "/budget";
 const std::string kComHistory = "/history/center_of_mass_plate_frame";
 
 void put(h5::File& f, const std::string& path, const std::vector<double>& v, const h5::Shape& s,
@@ -68,26 +67,6 @@ void readSolver(const h5::File& f, HydroRunContent& c) {
   c.nonlinear_failures = f.readAttribute<std::int64_t>(s, "nonlinear_failures");
 }
 
-void writeBudget(h5::File& f, const HydroRunContent::EnergyBudget& b) {
-  if (b.empty()) return;
-  f.createGroup(kBudget);
-  const std::size_t P = b.plate_work.size();
-  put(f, kBudget + "/plate_work", b.plate_work, {P}, "J");
-  put(f, kBudget + "/collisional_loss", b.collisional_loss, {P}, "J");
-  put(f, kBudget + "/friction_loss", b.friction_loss, {P}, "J");
-  put(f, kBudget + "/wall_loss", b.wall_loss, {P}, "J");
-  put(f, kBudget + "/energy_change", b.energy_change, {P}, "J");
-}
-
-void readBudget(const h5::File& f, HydroRunContent::EnergyBudget& b) {
-  if (!f.isGroup(kBudget)) return;
-  b.plate_work = f.readDataset<double>(kBudget + "/plate_work");
-  b.collisional_loss = f.readDataset<double>(kBudget + "/collisional_loss");
-  b.friction_loss = f.readDataset<double>(kBudget + "/friction_loss");
-  b.wall_loss = f.readDataset<double>(kBudget + "/wall_loss");
-  b.energy_change = f.readDataset<double>(kBudget + "/energy_change");
-}
-
 }  // namespace
 
 void writeHydroRunFile(const std::string& path, const HydroRunContent& c) {
@@ -99,7 +78,7 @@ void writeHydroRunFile(const std::string& path, const HydroRunContent& c) {
   put(f, fields_layout::kGridZ, c.lab.z, {c.lab.z.size()}, "m");
   writePhaseProfiles(f, "", c.lab);
   writeSolver(f, c);
-  writeBudget(f, c.budget);
+  writeEnergyBudget(f, c.budget);
   if (!c.com_history.empty()) {
     f.createGroup("/history");
     put(f, kComHistory, c.com_history, {c.com_history.size()}, "m");
@@ -121,7 +100,7 @@ HydroRunContent readHydroRunFile(const std::string& path) {
   readSolver(f, c);
   c.lab = readPhaseProfiles(f, "");
   c.scene_toml = f.readStringDataset(fields_layout::kScene);
-  readBudget(f, c.budget);
+  c.budget = readEnergyBudget(f);
   if (f.isDataset(kComHistory)) {
     c.com_history = f.readDataset<double>(kComHistory);
     c.phases_per_cycle = f.readAttribute<std::int64_t>(kComHistory, "phases_per_cycle");

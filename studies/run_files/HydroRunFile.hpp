@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "coarse_grain/PhaseProfiles.hpp"
+#include "studies/run_files/EnergyBudgetGroup.hpp"
 
 namespace granwave {
 
@@ -32,10 +33,7 @@ struct HydroRunContent {
   std::int64_t phases_per_cycle = 0;
   // The energy that crossed the layer over each phase interval of the window (J, the box's
   // width), when the scene asked for it (hydro.energy_budget); empty otherwise.
-  struct EnergyBudget {
-    std::vector<double> plate_work, collisional_loss, friction_loss, wall_loss, energy_change;
-    bool empty() const { return plate_work.empty(); }
-  } budget;
+  RunEnergyBudget budget;
   std::string scene_toml;  // the fully resolved scene
   // Drive cycles in the window: the period, or 2 when none was found (HydroSimulation).
   int windowCycles() const { return periodic ? static_cast<int>(period) : 2; }

@@ -68,7 +68,7 @@ BudgetSeries continuumBudget(const RunSet& runs, const std::string& label,
     b.why = "the run failed";
     return b;
   }
-  const HydroRunContent::EnergyBudget& e = h.fields->budget;
+  const RunEnergyBudget& e = h.fields->budget;
   if (e.empty()) {
     b.why = "the run did not record its budget";
     return b;

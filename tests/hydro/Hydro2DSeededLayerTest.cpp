@@ -4,7 +4,8 @@
 // (alternate columns' top cells squeezed against the lid) that a central interface slope left
 // without a restoring force and that ended such runs in cycles 10-31 (hydro/Layer2DState.hpp,
 // layerGeometry: why the drift is taken face by face); and where a layer empties near the
-// free surface, the vertical remap must carry the run on (hydro/Layer2DRemap.hpp).
+// free surface, the run must go on, the vertical remap restoring the layers' shares
+// (hydro/Layer2DRemap.hpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -65,9 +66,10 @@ TEST(Hydro2DSeededLayer, PaperDryLayerRunsTwentyFiveCyclesWithoutGrowingATwoColu
 
 namespace {
 
-// The paper's dry layer, 8 columns, 1 % seed, in the box `g` (periodic or between side walls):
-// without the remap the run fails within `cycles`; with it the run goes on, the mass exact.
-void expectOnlyTheRemapCarriesTheRunOn(const HydroGeometry& g, bool periodic, int cycles) {
+// The paper's dry layer, 8 columns, 1 % seed, in the box `g` (periodic or between side walls),
+// with the vertical remap at `remap_share` (0: off): it runs its `cycles`, the mass exact.
+Hydro2DResult expectTheSeededLayerRuns(const HydroGeometry& g, bool periodic, int cycles,
+                                       double remap_share) {
   const ConstitutiveModel m =
       test::beadModel(RestitutionClosure::dry(0.1), RestitutionClosure::dry(0.1));
   const int columns = 8;
@@ -75,32 +77,35 @@ void expectOnlyTheRemapCarriesTheRunOn(const HydroGeometry& g, bool periodic, in
                            perturbedCellMasses(columns, g.cells, 300 * kMass / (30 * kD), 0.01, 1));
   Hydro2DRunOptions o;
   o.cycles = cycles;
-  EXPECT_THROW(HydroSimulation2D(op, o).run(), HydroFailure);
-  o.remap_share = 0.25;
+  o.remap_share = remap_share;
   const Hydro2DResult r = HydroSimulation2D(op, o).run();
-  ASSERT_EQ(r.cycles, o.cycles);
-  EXPECT_GE(r.remaps, 1);
+  EXPECT_EQ(r.cycles, cycles);
   EXPECT_LT(r.mass_drift, 1e-13);
-  ::testing::Test::RecordProperty("remaps", std::to_string(r.remaps));
+  return r;
 }
 
 }  // namespace
 
-TEST(Hydro2DSeededLayer, PaperDryLayerInATallBoxRunsPastTheCellItEmptiesOnlyWithTheRemap) {
+TEST(Hydro2DSeededLayer, PaperDryLayerInATallBoxRunsItsCyclesWithTheRemapFiring) {
   // The paper's dry layer in a box 0.1 m high (the lid out of reach), 8 columns x 40 cells,
-  // 1 % seed: near the free surface the flow turns two-dimensional and a cell of the second
-  // layer from the top is emptied sideways (docs/hydro.md, "Vertical remap"). Without the
-  // remap the run fails there (measured: cycle 20, a top cell's temperature); with it the
-  // layers are remapped and the run goes on, the mass exact.
+  // 1 % seed: near the free surface the flow turns two-dimensional and a layer thins
+  // sideways; the remap restores the layers' shares (docs/hydro.md, "Vertical remap") and
+  // the run goes on. (With the drift as the mean face velocity times the slope, the run
+  // failed in cycle 20 without the remap, a cell of the second layer from the top emptied;
+  // with the mass-flux drift of interfaceDrift it runs without it too, measured, so only
+  // the default is run here.)
   HydroGeometry g = test::paperGeometry(40);
   g.height = 0.1;
-  expectOnlyTheRemapCarriesTheRunOn(g, true, 25);
+  const Hydro2DResult r = expectTheSeededLayerRuns(g, true, 25, 0.25);
+  EXPECT_GE(r.remaps, 1);
+  RecordProperty("remaps", std::to_string(r.remaps));
 }
 
-TEST(Hydro2DSeededLayer, PaperDryLayerBetweenSideWallsRunsPastItsFreeSurfaceFailureWithTheRemap) {
-  // The paper's dry layer between side walls (30 d box), 8 columns x 20 cells, 1 % seed.
-  // Without the remap a free-surface node's step fails in cycle 9 (measured; the failure for
-  // which `granwave hydro` refused side walls before the remap, docs/hydro.md, "The 2D model");
-  // with it the run goes on.
-  expectOnlyTheRemapCarriesTheRunOn(test::paperGeometry(20), false, 12);
+TEST(Hydro2DSeededLayer, PaperDryLayerBetweenSideWallsRunsItsCyclesWithTheRemapFiring) {
+  // The paper's dry layer between side walls (30 d box), 8 columns x 20 cells, 1 % seed, 12
+  // cycles. Without the remap a free-surface node's step fails (measured: cycle 12 with the
+  // mass-flux drift, cycle 9 with the velocity drift; the failure for which `granwave hydro`
+  // once refused side walls); with it the remap fires and the run goes on.
+  const Hydro2DResult r = expectTheSeededLayerRuns(test::paperGeometry(20), false, 12, 0.25);
+  EXPECT_GE(r.remaps, 1);
 }
