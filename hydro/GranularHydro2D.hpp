@@ -115,10 +115,10 @@ class GranularHydro2D {
   // The powers that change the layer's lab-frame energy, per unit depth (W/m), as
   // GranularHydro1D::EnergyRates; side_wall_loss is the loss at explicit side walls.
   // contact_drift is the rate at which the boundary nodes' drift (dz/dt = w - drift) changes
-  // the plate's and the lid's elastic energy, sum dx (sigma_plate drift_i0 - sigma_lid
-  // drift_iN): no force answers it (the walls act on w alone; docs/hydro.md, "Interfaces
-  // between columns"), so dE/dt = plate_work - losses + contact_drift exactly. It is not one
-  // of the budget's quadratures: it lies in a phase budget's closure.
+  // the plate's and the lid's elastic energy, sum dx (s_plate drift_i0 - s_lid drift_iN), s
+  // the walls' elastic stress: no force answers it (the walls act on w alone; docs/hydro.md,
+  // "Interfaces between columns"), so dE/dt = plate_work - losses + contact_drift (up to the
+  // smooth switches). Not one of the budget's quadratures: it lies in a phase budget's closure.
   struct EnergyRates {
     double plate_work = 0, collisional_loss = 0, friction_loss = 0, wall_loss = 0;
     double side_wall_loss = 0, contact_drift = 0;

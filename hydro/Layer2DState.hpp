@@ -115,9 +115,12 @@ S nodeMassSum(const GranularHydro2D::Workspace<S>& w, int i, int j) {
 // down by their drift change it by -g sum m drift: with this drift the two are equal in every
 // state, so the horizontal flow does no work against gravity (as in the continuum, where
 // flow at a fixed height leaves the potential energy alone) and the operator's energy rates
-// are the lab-frame energy's derivative exactly (tests/hydro/Hydro2DEnergyBudgetTest). For a
-// layer uniform in density (F = mu u) it is 0.5 sum U_f s_f, the kinematic u dz/dx face by
-// face. Face by face, not the mean velocity times the central slope: a central slope is blind
+// are the lab-frame energy's derivative (tests/hydro/Hydro2DEnergyBudgetTest), up to the
+// smooth switches: F's upwind switch over |u| < u_width (F is not quite linear in u) and the
+// mass floor. For a layer of uniform density and cell length (F = mu u) it is 0.5 sum U_f s_f,
+// the kinematic u dz/dx face by face (to leading order otherwise). A near-empty cell with
+// inflow from a full neighbour gets a large drift, Q/mu: the remap keeps cells from emptying.
+// Face by face, not the mean velocity times the central slope: a central slope is blind
 // to interfaces whose heights alternate from column to column, and with it a two-column mode
 // had no restoring force (docs/hydro.md, "Interfaces between columns").
 template <class S>

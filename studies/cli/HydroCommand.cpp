@@ -78,7 +78,7 @@ void print2DSummary(const HydroOptions& opt, const Hydro2DRunContent& c, const s
       c.linear_iterations, c.preconditioner_jacobians);
   fmt::print("remaps          {} (hydro.remap_share), {:.3g} J/m moved into heat\n", c.remaps,
              c.remap_heat);
-  printBudget(c.budget, c.windowCycles());
+  if (!c.budget.empty()) printBudget(c.budget, c.windowCycles());
   if (c.surface.available)
     fmt::print("{}", surfaceSpectrumLine(c.surface));
   else

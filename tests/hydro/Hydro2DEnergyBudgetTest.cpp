@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <string>
 #include <vector>
 
 #include "Hydro2DTestSupport.hpp"
@@ -115,7 +114,8 @@ TEST(Hydro2DEnergyBudget, RatesAreTheLabEnergysDerivativeForATiltedLayerInFlight
 TEST(Hydro2DEnergyBudget, PhaseBudgetsCloseOverAPerturbedRun) {
   // The paper's dry drive on 8 columns of 20 cells, column masses perturbed by 5 % RMS,
   // spread and falling from t = 0, rtol 1e-6, three cycles. Over each of the last 100 phases
-  // the residual E(end) - E(start) - (work - losses) is the integration error: asserted below
+  // the residual E(end) - E(start) - (work - losses) is the integration error and the contact
+  // drift's integral (the bottom nodes' slopes while in contact are small here): asserted below
   // 5e-3 of the phase's largest term (work, a loss or the energy change; as the 1D budget's
   // test; measured at most 1.3e-3), and summed below 1e-4 of the plate's throughput
   // (measured 5e-6). The rates' error of the drift before the mass-flux weighting was too

@@ -3,7 +3,7 @@
 // none (docs/hydro.md, "The 2D model"). So the seed must not grow into the grid-scale mode
 // (alternate columns' top cells squeezed against the lid) that a central interface slope left
 // without a restoring force and that ended such runs in cycles 10-31 (hydro/Layer2DState.hpp,
-// layerGeometry: why the drift is taken face by face); and where a layer empties near the
+// interfaceDrift: why the drift is taken face by face); and where a layer empties near the
 // free surface, the run must go on, the vertical remap restoring the layers' shares
 // (hydro/Layer2DRemap.hpp).
 #include <gtest/gtest.h>
