@@ -156,10 +156,8 @@ void verticalMomentumAdvection(const StateView<S>& v, GranularHydro2D::Workspace
     if (v.op.wallFace(i)) continue;
     const int a = g.mirrored(i, -1), r = g.mirrored(i, 1), b = g.mirrored(i, 2);
     for (int j = 0; j <= g.N; ++j) {
-      S H = zeroLike(v);
-      int count = 0;
-      for (int k = j - 1; k <= j; ++k)
-        if (k >= 0 && k < g.N) H += 0.5 * w.flux[g.cell(i, k)], ++count;
+      const S H = interfaceFlux(w, i, j);  // the node's mass flux, as its drift's
+      const int count = (j > 0 ? 1 : 0) + (j < g.N ? 1 : 0);
       const S& wL = v.w(i, j);
       const S& wR = v.w(r, j);
       const S L = faceValue(v.w(a, j), wL, wR, width2);
