@@ -10,6 +10,7 @@
 #include "h5/File.hpp"
 #include "studies/method_comparison/MethodComparison.hpp"
 #include "studies/statistics/Measurement.hpp"
+#include "studies/wave_analysis/VelocityFronts.hpp"
 
 namespace granwave {
 
@@ -21,9 +22,16 @@ struct ModelCost {
   std::string model;
   bool continuum = false, reference = false, failed = false;
   double cpu = NAN;   // CPU-s per answer
-  Measurement speed;  // velocity-jump front speed (m/s)
-  // (speed - the particles') / the particles' speed, with its one-sigma error (both errors).
+  Measurement speed;  // velocity-jump front speed (m/s), the straight-line fit
+  // N sweep: the front's transits through the layer's mass (0.1-0.5, 0.5-0.9), the particles'
+  // as the continuum's are compared with them (particleTransit); empty on the paper's scenes.
+  bool has_transits = false;
+  TransitSpeeds transit[2];
+  // (answer - the particles') / the particles', with its one-sigma error (both errors): the
+  // accuracy axis. The answer is the fit, or on the N sweep the transit farthest from the
+  // particles' among those both resolve (`gap_on` says which).
   Measurement gap;
+  std::string gap_on = "fit";
   std::string periods;      // the layer's period(s) in drive cycles ("" when failed)
   Match match = Match::no;  // the reference: yes
   std::string why;          // how the match was judged, or why the model has no answer
@@ -46,6 +54,14 @@ void pickCheapest(SceneCost& scene);
 Match sweepMatch(const Measurement& continuum, int continuum_period, const Measurement& particles,
                  double particles_bound, const std::vector<int>& particle_periods, double tolerance,
                  std::string& why);
+
+// The N sweep's judgement by the transits (docs/studies.md, item 11): the period as in
+// sweepMatch, then each transit of the continuum against the particles' (`transit`): the worst
+// verdict of those compared (no, then not yet, then cannot tell, then yes); by the fit
+// (sweepMatch) only where no transit can be compared (the particles' fronts reach neither).
+Match sweepTransitMatch(const VelocityFronts& continuum, int continuum_period,
+                        const VelocityFronts& particles, const std::vector<int>& particle_periods,
+                        double tolerance, std::string& why);
 
 // The paper's dry and wet scenes (from the model hierarchy), then each count of the N sweep
 // for each law (particles against the continuum with the velocity-dependent closure).

@@ -244,6 +244,13 @@ void writeCost(h5::File& f, const WaveFrontsConfig& c, const WaveFrontsResults& 
 
 }  // namespace
 
+const TransitSpeeds& particleTransit(const SweepPoint& p, int i) {
+  const TransitSpeeds& pooled = p.tracked.transit[i];
+  if (pooled.speed.valid() || std::isfinite(pooled.lower_bound) || p.period2_seeds == 0)
+    return pooled;
+  return p.tracked_period2.transit[i];
+}
+
 bool peakJumps(const PhaseProfiles& p, const FrontEpisode& f, double limit) {
   const int n = p.phases();
   if (n <= 1 || p.front_height.size() != static_cast<std::size_t>(n)) return false;

@@ -62,6 +62,11 @@ struct SweepPoint {
   int hydro_period = 0;
 };
 
+// The particles' transit `i` (0: mass 0.1-0.5, 1: 0.5-0.9) a continuum's is compared with: the
+// whole run's, or where it has neither a speed nor a bound (a layer alternating its impacts,
+// whose pooled 2-cycle window does not track the jump), the period-2 windows'.
+const TransitSpeeds& particleTransit(const SweepPoint& p, int i);
+
 struct ParameterSweep {
   std::string key;  // "St_c", "e_inf"
   std::vector<double> values;

@@ -51,15 +51,6 @@ std::string period2Cell(const SweepPoint& p) {
                      transitCell(p.tracked_period2.transit[1]), p.period2_seeds, p.tracked_seeds);
 }
 
-// The particles' transit the ratio is taken against: the whole run's, or where it has neither
-// a speed nor a bound (a layer alternating its impacts), the period-2 windows'.
-const TransitSpeeds& particleTransit(const SweepPoint& p, int i) {
-  const TransitSpeeds& pooled = p.tracked.transit[i];
-  if (pooled.speed.valid() || std::isfinite(pooled.lower_bound) || p.period2_seeds == 0)
-    return pooled;
-  return p.tracked_period2.transit[i];
-}
-
 }  // namespace
 
 void transitDepthTable(const WaveFrontsConfig& c, const WaveFrontsResults& r, ReportSection& s) {

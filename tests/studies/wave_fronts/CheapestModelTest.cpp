@@ -87,4 +87,109 @@ TEST(SweepMatch, AContinuumWithoutAFrontDoesNotReproduce) {
   EXPECT_EQ(why, "no resolved front");
 }
 
+// A front's transits: a speed (error > 0), or a bound (error 0 stands for "a bound"), or, with
+// neither, a front that does not reach the fractions.
+TransitSpeeds transit(double speed, double error) {
+  TransitSpeeds t;
+  t.fronts = 1;
+  if (!std::isfinite(speed)) return t;
+  t.reached = 1;
+  if (error > 0) {
+    t.speed = {speed, error};
+    t.resolved = 1;
+  } else {
+    t.lower_bound = speed;
+  }
+  return t;
+}
+
+VelocityFronts fronts(const TransitSpeeds& dense, const TransitSpeeds& upper,
+                      Measurement fit = {}) {
+  VelocityFronts v;
+  v.speed = fit;
+  v.transit[0] = dense;
+  v.transit[1] = upper;
+  return v;
+}
+
+TEST(SweepTransitMatch, BothTransitsWithinTheToleranceAndTheSamePeriodReproduce) {
+  std::string why;
+  // 2.0 +- 0.05 against 2.1 +- 0.05 (as above); 1.0 +- 0.02 against 1.05 +- 0.02: gap 0.05 +
+  // 1.96 * 0.028 = 0.105 < 0.1575.
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(2.0, 0.05), transit(1.0, 0.02)), 1,
+                              fronts(transit(2.1, 0.05), transit(1.05, 0.02)), {1, 1}, 0.15, why),
+            Match::yes);
+  EXPECT_EQ(why, "transits (mass 0.1-0.5: -5 +- 3 %; mass 0.5-0.9: -5 +- 3 %) and period");
+}
+
+TEST(SweepTransitMatch, TheTransitFarthestOffDecidesWhateverTheFitSays) {
+  std::string why;
+  // The upper part 30 % too fast; the fits agree exactly.
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(2.0, 0.05), transit(1.3, 0.02), {2.0, 0.05}), 1,
+                              fronts(transit(2.0, 0.05), transit(1.0, 0.02), {2.0, 0.05}), {1},
+                              0.15, why),
+            Match::no);
+}
+
+TEST(SweepTransitMatch, ATransitTheParticlesFrontsDoNotReachIsLeftOut) {
+  std::string why;
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(2.0, 0.05), transit(1.3, 0.02)), 1,
+                              fronts(transit(2.0, 0.05), transit(NAN, 0)), {1}, 0.15, why),
+            Match::yes);
+  EXPECT_NE(why.find("the particles' fronts do not reach it"), std::string::npos) << why;
+}
+
+TEST(SweepTransitMatch, AContinuumFrontThatStopsBelowATransitTheParticlesMakeDoesNotReproduce) {
+  std::string why;
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(2.0, 0.05), transit(NAN, 0)), 1,
+                              fronts(transit(2.0, 0.05), transit(1.0, 0.02)), {1}, 0.15, why),
+            Match::no);
+  EXPECT_NE(why.find("stops below it"), std::string::npos) << why;
+}
+
+TEST(SweepTransitMatch, ABoundDiffersOnlyBeyondTheToleranceAndOtherwiseStaysOpen) {
+  std::string why;
+  const TransitSpeeds upper = transit(1.0, 0.02);
+  // The continuum crosses the dense half faster than 14 m/s, the particles at 2.0 +- 0.05.
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(14, 0), upper), 1, fronts(transit(2.0, 0.05), upper),
+                              {1}, 0.15, why),
+            Match::no);
+  // A bound of 2.1 m/s: the particles' 2.0 +- 0.05 may be reached by a speed above it.
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(2.1, 0), upper), 1, fronts(transit(2.0, 0.05), upper),
+                              {1}, 0.15, why),
+            Match::not_yet);
+  // The particles' bound 100 m/s against a continuum at 5 m/s: far too slow.
+  EXPECT_EQ(sweepTransitMatch(fronts(transit(5.0, 0.5), upper), 1, fronts(transit(100, 0), upper),
+                              {1}, 0.15, why),
+            Match::no);
+}
+
+TEST(SweepTransitMatch, AParticleTransitWithoutAnErrorLeavesTheVerdictOpenHoweverClose) {
+  std::string why;
+  const TransitSpeeds upper = transit(1.0, 0.02);
+  TransitSpeeds dense = transit(2.0, 0.05);
+  dense.speed.error = NAN;  // fewer than half of the bootstrap's resamples resolve it
+  EXPECT_EQ(
+      sweepTransitMatch(fronts(transit(2.0, 0.05), upper), 1, fronts(dense, upper), {1}, 0.15, why),
+      Match::not_yet);
+  EXPECT_NE(why.find("+0 %, the particles' without an error"), std::string::npos) << why;
+}
+
+TEST(SweepTransitMatch, WithoutATransitToCompareTheFitJudges) {
+  std::string why;
+  const TransitSpeeds none = transit(NAN, 0);
+  EXPECT_EQ(sweepTransitMatch(fronts(none, none, {2.0, 0.05}), 2, fronts(none, none, {2.1, 0.05}),
+                              {2, 2}, 0.15, why),
+            Match::yes);
+  EXPECT_EQ(why.rfind("the fit (front speed and period)", 0), 0u) << why;
+}
+
+TEST(SweepTransitMatch, APeriodOtherThanTheSeedsDoesNotReproduceWhateverTheTransits) {
+  std::string why;
+  const TransitSpeeds dense = transit(2.0, 0.05);
+  EXPECT_EQ(sweepTransitMatch(fronts(dense, dense), 1, fronts(dense, dense), {2, 2}, 0.15, why),
+            Match::no);
+  EXPECT_EQ(why, "period 1 against the particles' 2");
+}
+
 }  // namespace
